@@ -1,0 +1,33 @@
+// Command-line options of scatterer-render, parsed and validated in one place
+// so bad arguments get one clear message and a non-zero exit.
+#ifndef ScattererRenderOptions_h
+#define ScattererRenderOptions_h
+
+#include <string>
+
+namespace scatterer_examples
+{
+struct RenderOptions
+{
+  std::string Input;                    // empty: the prepared CT head
+  std::string Output = "ct-head.png";
+  std::string Mode = "stock";           // stock | phong | template
+  std::string Scene = "auto";           // auto | ct-head (scene for --input volumes)
+  int Width = 512;
+  int Height = 512;
+  int Frames = 1;
+  bool Json = false;
+  bool Help = false;
+};
+
+/** Parses argv into @p options; false with @p error set on a bad argument. */
+bool ParseRenderOptions(int argc, char* argv[], RenderOptions& options, std::string& error);
+
+/** The --help text. */
+std::string RenderUsage();
+
+/** Escapes a string for a JSON string literal. */
+std::string JsonEscape(const std::string& text);
+}
+
+#endif

@@ -1,0 +1,172 @@
+// scatterer-render: renders a volume to a PNG and reports frame times.
+//
+// Default: the real CT head benchmark scene (shared/scenes/ct-head.json) at
+// 512x512. Run with --help for the options.
+#include "Common/ScattererCtHeadScene.h"
+#include "Common/ScattererRenderOptions.h"
+
+#include "vtkGPUVolumeRayCastMapper.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkOpenGLGPUVolumeRayCastMapper.h"
+#include "vtkPNGWriter.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkScattererTemplateVolumeMapper.h"
+#include "vtkScattererVolumeReader.h"
+#include "vtkSmartPointer.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <vector>
+
+namespace
+{
+struct FrameStats
+{
+  double median = 0, min = 0, max = 0;
+};
+
+FrameStats Summarize(std::vector<double> ms)
+{
+  FrameStats s;
+  if (ms.empty())
+  {
+    return s;
+  }
+  std::sort(ms.begin(), ms.end());
+  const size_t n = ms.size();
+  s.median = n % 2 ? ms[n / 2] : 0.5 * (ms[n / 2 - 1] + ms[n / 2]);
+  s.min = ms.front();
+  s.max = ms.back();
+  return s;
+}
+
+vtkSmartPointer<vtkGPUVolumeRayCastMapper> MakeMapper(const scatterer_examples::RenderOptions& o)
+{
+  if (o.Mode == "template")
+  {
+    auto mapper = vtkSmartPointer<vtkScattererTemplateVolumeMapper>::New();
+    mapper->IlluminationEnabledOn();
+    return mapper;
+  }
+  return vtkSmartPointer<vtkOpenGLGPUVolumeRayCastMapper>::New();
+}
+}
+
+int main(int argc, char* argv[])
+{
+  scatterer_examples::RenderOptions options;
+  std::string error;
+  if (!scatterer_examples::ParseRenderOptions(argc, argv, options, error))
+  {
+    std::cerr << "scatterer-render: " << error << "\n"
+              << "Run 'scatterer-render --help' for the options.\n";
+    return 2;
+  }
+  if (options.Help)
+  {
+    std::cout << scatterer_examples::RenderUsage();
+    return 0;
+  }
+  if (!std::getenv("DISPLAY"))
+  {
+    std::cerr << "scatterer-render: no X display (DISPLAY is unset). VTK here renders through X;"
+                 " run under xvfb-run -a -s \"-screen 0 1280x1024x24\".\n";
+    return 1;
+  }
+
+  const bool ctHead = options.Input.empty();
+  const std::string input = ctHead ? scatterer_examples::CtHeadPath() : options.Input;
+  vtkSmartPointer<vtkImageData> image = vtkScattererVolumeReader::ReadVolume(input, &error);
+  if (!image)
+  {
+    std::cerr << "scatterer-render: " << error << "\n";
+    if (ctHead)
+    {
+      std::cerr << "The default CT head is prepared by: bash scripts/prepare-data.sh\n";
+    }
+    return 1;
+  }
+
+  vtkNew<vtkRenderWindow> window;
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  window->SetSize(options.Width, options.Height);
+  window->SetWindowName("scatterer-render");
+  renderer->SetBackground(0.0, 0.0, 0.0);
+
+  vtkSmartPointer<vtkGPUVolumeRayCastMapper> mapper = MakeMapper(options);
+  mapper->SetInputData(image);
+  vtkNew<vtkVolumeProperty> property;
+  vtkNew<vtkVolume> volume;
+  volume->SetMapper(mapper);
+  volume->SetProperty(property);
+  renderer->AddVolume(volume);
+
+  if (ctHead || options.Scene == "ct-head")
+  {
+    scatterer_examples::ApplyCtHeadProperty(property);
+    scatterer_examples::ApplyCtHeadCamera(renderer);
+    scatterer_examples::ApplyCtHeadLight(renderer);
+    scatterer_examples::ApplyCtHeadMapperSettings(mapper);
+    scatterer_examples::ApplyCtHeadWindowSettings(window);
+  }
+  else
+  {
+    scatterer_examples::ApplyAutoScene(image, property, renderer);
+    window->SetMultiSamples(0);
+  }
+  property->SetShade(options.Mode == "phong");
+
+  // One warm-up frame (shader compilation, texture upload), then the timed frames.
+  window->Render();
+  window->WaitForCompletion();
+  std::vector<double> frameMs;
+  for (int i = 0; i < options.Frames; ++i)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    window->Render();
+    window->WaitForCompletion();
+    const auto stop = std::chrono::steady_clock::now();
+    frameMs.push_back(std::chrono::duration<double, std::milli>(stop - start).count());
+  }
+  const FrameStats stats = Summarize(frameMs);
+
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetFileName(options.Output.c_str());
+  writer->SetInputConnection(grab->GetOutputPort());
+  writer->Write();
+  if (writer->GetErrorCode() != 0)
+  {
+    std::cerr << "scatterer-render: cannot write '" << options.Output << "'.\n";
+    return 1;
+  }
+
+  if (options.Json)
+  {
+    std::printf("{\"mode\": \"%s\", \"input\": \"%s\", \"size\": [%d, %d], \"frames\": %d, "
+                "\"frame_ms\": {\"median\": %.3f, \"min\": %.3f, \"max\": %.3f}, "
+                "\"output\": \"%s\"}\n",
+      options.Mode.c_str(), scatterer_examples::JsonEscape(input).c_str(), options.Width,
+      options.Height, options.Frames, stats.median, stats.min, stats.max,
+      scatterer_examples::JsonEscape(options.Output).c_str());
+  }
+  else
+  {
+    std::printf("%s: %s, %dx%d, mode %s, %d frames: median %.1f ms (min %.1f, max %.1f)\n",
+      options.Output.c_str(), input.c_str(), options.Width, options.Height, options.Mode.c_str(),
+      options.Frames, stats.median, stats.min, stats.max);
+  }
+  return 0;
+}
