@@ -3,6 +3,7 @@
 // Default: the real CT head benchmark scene (shared/scenes/ct-head.json) at
 // 512x512. Run with --help for the options.
 #include "Common/ScattererCtHeadScene.h"
+#include "Common/ScattererMapperSetup.h"
 #include "Common/ScattererRenderOptions.h"
 
 #include "vtkGPUVolumeRayCastMapper.h"
@@ -48,16 +49,6 @@ FrameStats Summarize(std::vector<double> ms)
   return s;
 }
 
-vtkSmartPointer<vtkGPUVolumeRayCastMapper> MakeMapper(const scatterer_examples::RenderOptions& o)
-{
-  if (o.Mode == "template")
-  {
-    auto mapper = vtkSmartPointer<vtkScattererTemplateVolumeMapper>::New();
-    mapper->IlluminationEnabledOn();
-    return mapper;
-  }
-  return vtkSmartPointer<vtkOpenGLGPUVolumeRayCastMapper>::New();
-}
 }
 
 int main(int argc, char* argv[])
@@ -102,7 +93,7 @@ int main(int argc, char* argv[])
   window->SetWindowName("scatterer-render");
   renderer->SetBackground(0.0, 0.0, 0.0);
 
-  vtkSmartPointer<vtkGPUVolumeRayCastMapper> mapper = MakeMapper(options);
+  vtkSmartPointer<vtkGPUVolumeRayCastMapper> mapper = scatterer_examples::MakeMapper(options);
   mapper->SetInputData(image);
   vtkNew<vtkVolumeProperty> property;
   vtkNew<vtkVolume> volume;
@@ -128,6 +119,11 @@ int main(int argc, char* argv[])
   // One warm-up frame (shader compilation, texture upload), then the timed frames.
   window->Render();
   window->WaitForCompletion();
+  double firstCacheMs = 0.0;
+  if (auto* st = vtkScattererTemplateVolumeMapper::SafeDownCast(mapper))
+  {
+    firstCacheMs = st->GetLastCacheUpdateMilliseconds();
+  }
   std::vector<double> frameMs;
   for (int i = 0; i < options.Frames; ++i)
   {
@@ -153,20 +149,29 @@ int main(int argc, char* argv[])
     return 1;
   }
 
+  std::string shader = "stock";
+  double cacheMs = 0.0;
+  if (auto* st = vtkScattererTemplateVolumeMapper::SafeDownCast(mapper))
+  {
+    shader = st->GetLastShaderFeatures();
+    cacheMs = firstCacheMs;
+  }
   if (options.Json)
   {
     std::printf("{\"mode\": \"%s\", \"input\": \"%s\", \"size\": [%d, %d], \"frames\": %d, "
+                "\"shader\": \"%s\", \"settings\": \"%s\", \"cache_update_ms\": %.1f, "
                 "\"frame_ms\": {\"median\": %.3f, \"min\": %.3f, \"max\": %.3f}, "
                 "\"output\": \"%s\"}\n",
       options.Mode.c_str(), scatterer_examples::JsonEscape(input).c_str(), options.Width,
-      options.Height, options.Frames, stats.median, stats.min, stats.max,
-      scatterer_examples::JsonEscape(options.Output).c_str());
+      options.Height, options.Frames, scatterer_examples::JsonEscape(shader).c_str(),
+      scatterer_examples::JsonEscape(scatterer_examples::DescribeSettings(mapper)).c_str(), cacheMs,
+      stats.median, stats.min, stats.max, scatterer_examples::JsonEscape(options.Output).c_str());
   }
   else
   {
-    std::printf("%s: %s, %dx%d, mode %s, %d frames: median %.1f ms (min %.1f, max %.1f)\n",
+    std::printf("%s: %s, %dx%d, mode %s (%s), %d frames: median %.1f ms (min %.1f, max %.1f)\n",
       options.Output.c_str(), input.c_str(), options.Width, options.Height, options.Mode.c_str(),
-      options.Frames, stats.median, stats.min, stats.max);
+      shader.c_str(), options.Frames, stats.median, stats.min, stats.max);
   }
   return 0;
 }

@@ -25,6 +25,38 @@ bool ParseInt(const std::string& text, int lo, int hi, int& value)
   return true;
 }
 
+bool ParseDouble(const std::string& text, double lo, double hi, double& value)
+{
+  if (text.empty())
+  {
+    return false;
+  }
+  char* end = nullptr;
+  errno = 0;
+  const double v = std::strtod(text.c_str(), &end);
+  if (errno != 0 || *end != '\0' || !(v >= lo && v <= hi))
+  {
+    return false;
+  }
+  value = v;
+  return true;
+}
+
+bool ParseOnOff(const std::string& text, bool& value)
+{
+  if (text == "on")
+  {
+    value = true;
+    return true;
+  }
+  if (text == "off")
+  {
+    value = false;
+    return true;
+  }
+  return false;
+}
+
 bool ParseSize(const std::string& text, int& w, int& h)
 {
   const auto x = text.find_first_of("xX");
@@ -46,11 +78,31 @@ std::string RenderUsage()
          "  --frames N        timed frames after one warm-up frame, 1..10000 (default 1)\n"
          "  --mode MODE       stock    : vtkOpenGLGPUVolumeRayCastMapper, no shading\n"
          "                    phong    : the stock mapper with VTK's gradient (Phong) shading\n"
-         "                    template : vtkScattererTemplateVolumeMapper (default: stock)\n"
+         "                    template : vtkScattererTemplateVolumeMapper with template\n"
+         "                               illumination (default)\n"
          "  --scene SCENE     for --input volumes: auto (fit camera, ramp transfer function)\n"
          "                    or ct-head (the benchmark scene's camera, light and transfer\n"
          "                    functions; for CT data in HU)\n"
          "  --json            print one JSON object: settings, frame times (ms), output path\n"
+         "Template illumination (--mode template):\n"
+         "  --shadows on|off  occlusion at photons: shadows, ambient occlusion (default on)\n"
+         "  --bleeding on|off colour bleeding between materials (default on)\n"
+         "  --thin on|off     thin-part check along photon directions (default on)\n"
+         "  --boundary on|off Snell rescaling across material boundaries (default on)\n"
+         "  --blend on|off    average two templates per sample (default off)\n"
+         "  --paths auto|requested  shader code for what the scene needs (auto, default)\n"
+         "                    or for every effect switched on\n"
+         "  --illumination cached|per-sample  photon test on the CPU at a coarse grid read by\n"
+         "                    every sample (cached, default) or in the shader per sample\n"
+         "  --cache-scale N   cached: volume voxels per cache voxel per axis, 1..8 (default 2)\n"
+         "  --photons N       photon cap per template, 1..1024 (default 24)\n"
+         "  --templates N     templates per material, 1..64 (default 8)\n"
+         "  --interval N      per-sample: ray samples between photon evaluations, 1..64\n"
+         "                    (default 4)\n"
+         "  --radius R        template radius in world units, > 0 (default 5 x spacing)\n"
+         "  --threshold T     photon-loop cut-off on transmittance x intensity, 0..1\n"
+         "  --strength S      occlusion strength, 0..100 (default 1)\n"
+         "  --long-range M    thin-part check distance in photon offsets, 1..64 (default 3)\n"
          "  --help            this text\n";
 }
 
@@ -129,6 +181,79 @@ bool ParseRenderOptions(int argc, char* argv[], RenderOptions& o, std::string& e
       if (o.Scene != "auto" && o.Scene != "ct-head")
       {
         error = "--scene must be auto or ct-head, got '" + o.Scene + "'";
+        return false;
+      }
+    }
+    else if (arg == "--shadows" || arg == "--bleeding" || arg == "--thin" || arg == "--boundary" ||
+      arg == "--blend")
+    {
+      if (!value(v))
+        return false;
+      bool& target = arg == "--shadows" ? o.Shadows
+        : arg == "--bleeding"           ? o.Bleeding
+        : arg == "--thin"               ? o.Thin
+        : arg == "--boundary"           ? o.Boundary
+                                        : o.Blend;
+      if (!ParseOnOff(v, target))
+      {
+        error = arg + " must be on or off, got '" + v + "'";
+        return false;
+      }
+    }
+    else if (arg == "--paths")
+    {
+      if (!value(v))
+        return false;
+      if (v != "auto" && v != "requested")
+      {
+        error = "--paths must be auto or requested, got '" + v + "'";
+        return false;
+      }
+      o.RequestedPaths = v == "requested";
+    }
+    else if (arg == "--illumination")
+    {
+      if (!value(o.Illumination))
+        return false;
+      if (o.Illumination != "cached" && o.Illumination != "per-sample")
+      {
+        error = "--illumination must be cached or per-sample, got '" + o.Illumination + "'";
+        return false;
+      }
+    }
+    else if (arg == "--photons" || arg == "--templates" || arg == "--interval" ||
+      arg == "--cache-scale")
+    {
+      if (!value(v))
+        return false;
+      const int hi = arg == "--photons" ? 1024 : arg == "--cache-scale" ? 8 : 64;
+      int& target = arg == "--photons" ? o.Photons
+        : arg == "--templates"         ? o.Templates
+        : arg == "--cache-scale"       ? o.CacheScale
+                                       : o.Interval;
+      if (!ParseInt(v, 1, hi, target))
+      {
+        error = arg + " must be an integer in 1.." + std::to_string(hi) + ", got '" + v + "'";
+        return false;
+      }
+    }
+    else if (arg == "--radius" || arg == "--threshold" || arg == "--strength" ||
+      arg == "--long-range")
+    {
+      if (!value(v))
+        return false;
+      const double lo = arg == "--long-range" ? 1.0 : arg == "--radius" ? 1e-9 : 0.0;
+      const double hi = arg == "--threshold" ? 1.0 : arg == "--strength" ? 100.0
+        : arg == "--long-range"              ? 64.0
+                                             : 1e9;
+      double& target = arg == "--radius" ? o.Radius
+        : arg == "--threshold"           ? o.Threshold
+        : arg == "--strength"            ? o.Strength
+                                         : o.LongRange;
+      if (!ParseDouble(v, lo, hi, target))
+      {
+        error = arg + " must be a number in [" + std::to_string(lo) + ", " + std::to_string(hi) +
+          "], got '" + v + "'";
         return false;
       }
     }

@@ -11,13 +11,20 @@ struct RenderOptions
 {
   std::string Input;                    // empty: the prepared CT head
   std::string Output = "ct-head.png";
-  std::string Mode = "stock";           // stock | phong | template
+  std::string Mode = "template";        // stock | phong | template
   std::string Scene = "auto";           // auto | ct-head (scene for --input volumes)
   int Width = 512;
   int Height = 512;
   int Frames = 1;
   bool Json = false;
   bool Help = false;
+
+  // Template illumination (--mode template); negative = the mapper's default.
+  bool Shadows = true, Bleeding = true, Thin = true, Boundary = true, Blend = false;
+  bool RequestedPaths = false; // --paths requested: every switched-on effect
+  int Photons = -1, Templates = -1, Interval = -1, CacheScale = -1;
+  std::string Illumination = "cached"; // cached | per-sample
+  double Radius = -1, Threshold = -1, Strength = -1, LongRange = -1;
 };
 
 /** Parses argv into @p options; false with @p error set on a bad argument. */

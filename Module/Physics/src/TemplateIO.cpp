@@ -1,0 +1,465 @@
+// Binary template files; the byte layout is specified in docs/model.md.
+#include <scatterer/TemplateIO.h>
+
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <istream>
+#include <ostream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace scatterer {
+
+namespace {
+
+constexpr unsigned char kMagic[8] = { 'S', 'C', 'A', 'T', 'T', 'P', 'L', 0x1A };
+// Smallest possible records, used to reject counts the remaining bytes cannot hold
+// before anything is allocated for them.
+constexpr std::size_t kMinMaterialBytes = 1 + 8 + 8 + 3 * 4 + 1 + 8 + 8 + 4 + 4;
+constexpr std::size_t kTemplateHeaderBytes = 4 + 1 + 8 + 6 * 8;
+constexpr std::size_t kPhotonBytes = 4 * 4;
+constexpr double kPositionSlack = 1e-5; // float rounding of positions just inside |p| < 1
+
+std::uint64_t fnv1a(const std::uint8_t* data, std::size_t size)
+{
+  std::uint64_t hash = 0xCBF29CE484222325ull;
+  for (std::size_t i = 0; i < size; ++i) {
+    hash ^= data[i];
+    hash *= 0x100000001B3ull;
+  }
+  return hash;
+}
+
+// What the reader accepts is exactly what the writer may write: one check for both.
+std::string templateProblem(const Template& t)
+{
+  const EnergyLedger& l = t.ledger;
+  const double fields[6] = { l.initial, l.stored, l.lostInTransit, l.escaped,
+    l.droppedBelowThreshold, l.droppedAtCap };
+  for (double f : fields) {
+    if (!std::isfinite(f) || f < 0.0) {
+      return "energy ledger has a negative or non-finite entry";
+    }
+  }
+  if (std::fabs(l.residual()) > 1e-6 * std::fmax(1.0, l.initial)) {
+    return "energy ledger does not close (residual " + std::to_string(l.residual()) + ")";
+  }
+  for (std::size_t j = 0; j < t.photons.size(); ++j) {
+    const Photon& p = t.photons[j];
+    const glm::vec3& x = p.position;
+    if (!std::isfinite(x.x) || !std::isfinite(x.y) || !std::isfinite(x.z) ||
+      !std::isfinite(p.intensity)) {
+      return "photon " + std::to_string(j) + " has a non-finite value";
+    }
+    if (!(p.intensity > 0.0f)) {
+      return "photon " + std::to_string(j) + " has intensity <= 0";
+    }
+    const double r2 = double(x.x) * x.x + double(x.y) * x.y + double(x.z) * x.z;
+    if (r2 > (1.0 + kPositionSlack) * (1.0 + kPositionSlack)) {
+      return "photon " + std::to_string(j) + " lies outside the unit template sphere";
+    }
+    if (j > 0 && p.intensity > t.photons[j - 1].intensity) {
+      return "photons are not sorted by descending intensity (at " + std::to_string(j) + ")";
+    }
+  }
+  return {};
+}
+
+class Writer {
+public:
+  std::vector<std::uint8_t> bytes;
+
+  void u8(std::uint8_t v) { bytes.push_back(v); }
+  void u32(std::uint32_t v)
+  {
+    for (int i = 0; i < 4; ++i) {
+      bytes.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
+    }
+  }
+  void u64(std::uint64_t v)
+  {
+    for (int i = 0; i < 8; ++i) {
+      bytes.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
+    }
+  }
+  void f32(float v)
+  {
+    std::uint32_t b;
+    std::memcpy(&b, &v, 4);
+    u32(b);
+  }
+  void f64(double v)
+  {
+    std::uint64_t b;
+    std::memcpy(&b, &v, 8);
+    u64(b);
+  }
+};
+
+class Reader {
+public:
+  Reader(const std::uint8_t* data, std::size_t size, std::string source)
+    : data_(data)
+    , size_(size)
+    , source_(std::move(source))
+  {
+  }
+
+  [[noreturn]] void fail(const std::string& what) const
+  {
+    throw std::runtime_error(source_ + ": " + what + " (at byte " + std::to_string(pos_) + ")");
+  }
+  std::size_t remaining() const { return size_ - pos_; }
+  std::size_t position() const { return pos_; }
+
+  const std::uint8_t* take(std::size_t n, const char* what)
+  {
+    if (n > remaining()) {
+      fail(std::string("truncated: ") + what + " needs " + std::to_string(n) + " bytes, " +
+        std::to_string(remaining()) + " left");
+    }
+    const std::uint8_t* p = data_ + pos_;
+    pos_ += n;
+    return p;
+  }
+  std::uint8_t u8(const char* what) { return *take(1, what); }
+  std::uint32_t u32(const char* what)
+  {
+    const std::uint8_t* p = take(4, what);
+    std::uint32_t v = 0;
+    for (int i = 0; i < 4; ++i) {
+      v |= static_cast<std::uint32_t>(p[i]) << (8 * i);
+    }
+    return v;
+  }
+  std::uint64_t u64(const char* what)
+  {
+    const std::uint8_t* p = take(8, what);
+    std::uint64_t v = 0;
+    for (int i = 0; i < 8; ++i) {
+      v |= static_cast<std::uint64_t>(p[i]) << (8 * i);
+    }
+    return v;
+  }
+  float f32(const char* what)
+  {
+    const std::uint32_t b = u32(what);
+    float v;
+    std::memcpy(&v, &b, 4);
+    return v;
+  }
+  double f64(const char* what)
+  {
+    const std::uint64_t b = u64(what);
+    double v;
+    std::memcpy(&v, &b, 8);
+    return v;
+  }
+  // A count that is within its cap and whose records can fit in the remaining bytes.
+  std::uint32_t count(const char* what, std::uint32_t cap, std::size_t minRecordBytes)
+  {
+    const std::uint32_t n = u32(what);
+    if (n > cap) {
+      fail(std::string("absurd ") + what + " " + std::to_string(n) + " (at most " +
+        std::to_string(cap) + ")");
+    }
+    if (minRecordBytes > 0 && n > remaining() / minRecordBytes) {
+      fail(std::string("truncated: ") + what + " " + std::to_string(n) +
+        " does not fit in the " + std::to_string(remaining()) + " bytes left");
+    }
+    return n;
+  }
+
+private:
+  const std::uint8_t* data_;
+  std::size_t size_;
+  std::size_t pos_ = 0;
+  std::string source_;
+};
+
+void writeSettings(Writer& w, const GeneratorSettings& s)
+{
+  w.u32(static_cast<std::uint32_t>(s.initialLights));
+  w.f64(s.threshold);
+  w.u32(static_cast<std::uint32_t>(s.templatesPerMaterial));
+  w.u64(s.seed);
+  w.f64(s.stepLength);
+  w.f64(s.latticeCell);
+  w.u32(static_cast<std::uint32_t>(s.maxPhotonsPerTemplate));
+  w.u32(static_cast<std::uint32_t>(s.maxEventsPerTemplate));
+}
+
+// Settings ints are stored as u32; values above INT_MAX fail validate() as negatives.
+GeneratorSettings readSettings(Reader& r)
+{
+  GeneratorSettings s;
+  s.initialLights = static_cast<int>(r.u32("initialLights"));
+  s.threshold = r.f64("threshold");
+  s.templatesPerMaterial = static_cast<int>(r.u32("templatesPerMaterial"));
+  s.seed = r.u64("seed");
+  s.stepLength = r.f64("stepLength");
+  s.latticeCell = r.f64("latticeCell");
+  s.maxPhotonsPerTemplate = static_cast<int>(r.u32("maxPhotonsPerTemplate"));
+  s.maxEventsPerTemplate = static_cast<int>(r.u32("maxEventsPerTemplate"));
+  try {
+    s.validate();
+  } catch (const std::invalid_argument& e) {
+    r.fail(std::string("invalid settings: ") + e.what());
+  }
+  return s;
+}
+
+void writeMaterial(Writer& w, const Material& m)
+{
+  w.u8(static_cast<std::uint8_t>(m.name.size()));
+  for (char c : m.name) {
+    w.u8(static_cast<std::uint8_t>(c));
+  }
+  w.f64(m.opacity);
+  w.f64(m.refractiveIndex);
+  w.f32(m.diffuse.r);
+  w.f32(m.diffuse.g);
+  w.f32(m.diffuse.b);
+  w.u8(m.selector.kind == Selector::Kind::Label ? 1 : 0);
+  w.f64(m.selector.lo);
+  w.f64(m.selector.hi);
+  w.u32(static_cast<std::uint32_t>(m.selector.label));
+}
+
+Material readMaterial(Reader& r)
+{
+  Material m;
+  const std::uint8_t nameLength = r.u8("material name length");
+  const std::uint8_t* name = r.take(nameLength, "material name");
+  m.name.assign(reinterpret_cast<const char*>(name), nameLength);
+  m.opacity = r.f64("opacity");
+  m.refractiveIndex = r.f64("refractiveIndex");
+  m.diffuse.r = r.f32("diffuse.r");
+  m.diffuse.g = r.f32("diffuse.g");
+  m.diffuse.b = r.f32("diffuse.b");
+  const std::uint8_t kind = r.u8("selector kind");
+  if (kind > 1) {
+    r.fail("selector kind must be 0 (range) or 1 (label), got " + std::to_string(kind));
+  }
+  m.selector.kind = kind == 1 ? Selector::Kind::Label : Selector::Kind::ScalarRange;
+  m.selector.lo = r.f64("selector lo");
+  m.selector.hi = r.f64("selector hi");
+  m.selector.label = static_cast<std::int32_t>(r.u32("selector label"));
+  try {
+    m.validate();
+  } catch (const std::invalid_argument& e) {
+    r.fail(std::string("invalid material: ") + e.what());
+  }
+  return m;
+}
+
+void writeTemplate(Writer& w, const Template& t)
+{
+  w.u32(static_cast<std::uint32_t>(t.photons.size()));
+  w.u8(t.capped ? 1 : 0);
+  w.u64(t.events);
+  const EnergyLedger& l = t.ledger;
+  for (double f : { l.initial, l.stored, l.lostInTransit, l.escaped, l.droppedBelowThreshold,
+         l.droppedAtCap }) {
+    w.f64(f);
+  }
+  for (const Photon& p : t.photons) {
+    w.f32(p.position.x);
+    w.f32(p.position.y);
+    w.f32(p.position.z);
+    w.f32(p.intensity);
+  }
+}
+
+Template readTemplate(Reader& r)
+{
+  Template t;
+  const std::uint32_t photons =
+    r.count("photon count", static_cast<std::uint32_t>(kMaxPhotonsCap), kPhotonBytes);
+  const std::uint8_t capped = r.u8("capped flag");
+  if (capped > 1) {
+    r.fail("capped flag must be 0 or 1, got " + std::to_string(capped));
+  }
+  t.capped = capped == 1;
+  t.events = r.u64("event count");
+  EnergyLedger& l = t.ledger;
+  l.initial = r.f64("ledger.initial");
+  l.stored = r.f64("ledger.stored");
+  l.lostInTransit = r.f64("ledger.lostInTransit");
+  l.escaped = r.f64("ledger.escaped");
+  l.droppedBelowThreshold = r.f64("ledger.droppedBelowThreshold");
+  l.droppedAtCap = r.f64("ledger.droppedAtCap");
+  t.photons.resize(photons); // bounded: count() checked the bytes are there
+  for (Photon& p : t.photons) {
+    p.position.x = r.f32("photon x");
+    p.position.y = r.f32("photon y");
+    p.position.z = r.f32("photon z");
+    p.intensity = r.f32("photon intensity");
+  }
+  const std::string problem = templateProblem(t);
+  if (!problem.empty()) {
+    r.fail("invalid template: " + problem);
+  }
+  return t;
+}
+
+std::vector<std::uint8_t> serialize(const TemplateSet& set)
+{
+  set.settings.validate();
+  if (set.materials.size() > kMaxFileMaterials) {
+    throw std::invalid_argument("writeTemplates: at most " + std::to_string(kMaxFileMaterials) +
+      " materials per file, got " + std::to_string(set.materials.size()));
+  }
+  Writer w;
+  w.bytes.insert(w.bytes.end(), kMagic, kMagic + 8);
+  w.u32(kTemplateFileVersion);
+  w.u32(0); // flags, reserved
+  writeSettings(w, set.settings);
+  w.u32(static_cast<std::uint32_t>(set.materials.size()));
+  for (std::size_t m = 0; m < set.materials.size(); ++m) {
+    const MaterialTemplates& mt = set.materials[m];
+    mt.material.validate();
+    if (mt.templates.size() > static_cast<std::size_t>(kMaxTemplatesPerMaterial)) {
+      throw std::invalid_argument("writeTemplates: material " + std::to_string(m) +
+        " has more than " + std::to_string(kMaxTemplatesPerMaterial) + " templates");
+    }
+    writeMaterial(w, mt.material);
+    w.u32(static_cast<std::uint32_t>(mt.templates.size()));
+    for (std::size_t t = 0; t < mt.templates.size(); ++t) {
+      const Template& tpl = mt.templates[t];
+      std::string problem = tpl.photons.size() > static_cast<std::size_t>(kMaxPhotonsCap)
+        ? "too many photons"
+        : templateProblem(tpl);
+      if (!problem.empty()) {
+        throw std::invalid_argument("writeTemplates: material " + std::to_string(m) +
+          " template " + std::to_string(t) + ": " + problem);
+      }
+      writeTemplate(w, tpl);
+    }
+  }
+  if (w.bytes.size() + 8 > kMaxTemplateFileBytes) {
+    throw std::invalid_argument("writeTemplates: the set needs more than " +
+      std::to_string(kMaxTemplateFileBytes) + " bytes");
+  }
+  w.u64(fnv1a(w.bytes.data(), w.bytes.size()));
+  return w.bytes;
+}
+
+TemplateSet parse(const std::uint8_t* data, std::size_t size, const std::string& source)
+{
+  if (size > kMaxTemplateFileBytes) {
+    throw std::runtime_error(source + ": larger than the " +
+      std::to_string(kMaxTemplateFileBytes) + "-byte limit");
+  }
+  Reader r(data, size, source);
+  const std::uint8_t* magic = r.take(8, "magic");
+  if (std::memcmp(magic, kMagic, 8) != 0) {
+    r.fail("not a scatterer template file (bad magic)");
+  }
+  const std::uint32_t version = r.u32("version");
+  if (version != kTemplateFileVersion) {
+    r.fail("unsupported version " + std::to_string(version) + " (this reader knows " +
+      std::to_string(kTemplateFileVersion) + ")");
+  }
+  if (r.u32("flags") != 0) {
+    r.fail("unknown flags set");
+  }
+  TemplateSet set;
+  set.settings = readSettings(r);
+  const std::uint32_t materials = r.count("material count", kMaxFileMaterials, kMinMaterialBytes);
+  set.materials.reserve(materials);
+  for (std::uint32_t m = 0; m < materials; ++m) {
+    MaterialTemplates mt;
+    mt.material = readMaterial(r);
+    const std::uint32_t templates = r.count("template count",
+      static_cast<std::uint32_t>(kMaxTemplatesPerMaterial), kTemplateHeaderBytes);
+    mt.templates.reserve(templates);
+    for (std::uint32_t t = 0; t < templates; ++t) {
+      mt.templates.push_back(readTemplate(r));
+    }
+    set.materials.push_back(std::move(mt));
+  }
+  const std::size_t payload = r.position();
+  const std::uint64_t stored = r.u64("checksum");
+  if (stored != fnv1a(data, payload)) {
+    r.fail("checksum mismatch (file corrupted)");
+  }
+  if (r.remaining() != 0) {
+    r.fail(std::to_string(r.remaining()) + " unexpected trailing bytes");
+  }
+  return set;
+}
+
+// Reads at most limit + 1 bytes, so an endless or huge stream is refused, not buffered.
+std::vector<std::uint8_t> readAll(std::istream& in, const std::string& source)
+{
+  std::vector<std::uint8_t> bytes;
+  char buffer[65536];
+  while (in) {
+    in.read(buffer, sizeof buffer);
+    const auto got = static_cast<std::size_t>(in.gcount());
+    bytes.insert(bytes.end(), buffer, buffer + got);
+    if (bytes.size() > kMaxTemplateFileBytes) {
+      throw std::runtime_error(source + ": larger than the " +
+        std::to_string(kMaxTemplateFileBytes) + "-byte limit");
+    }
+  }
+  if (in.bad()) {
+    throw std::runtime_error(source + ": read error");
+  }
+  return bytes;
+}
+
+} // namespace
+
+void writeTemplates(std::ostream& out, const TemplateSet& set)
+{
+  const std::vector<std::uint8_t> bytes = serialize(set);
+  out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  if (!out) {
+    throw std::runtime_error("writeTemplates: write failed");
+  }
+}
+
+void saveTemplates(const std::string& path, const TemplateSet& set)
+{
+  const std::vector<std::uint8_t> bytes = serialize(set); // fail before touching the file
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) {
+    throw std::runtime_error("template file '" + path + "': cannot open for writing");
+  }
+  out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  out.close();
+  if (!out) {
+    throw std::runtime_error("template file '" + path + "': write failed");
+  }
+}
+
+TemplateSet parseTemplates(const std::uint8_t* data, std::size_t size)
+{
+  if (data == nullptr && size != 0) {
+    throw std::runtime_error("template data: null pointer");
+  }
+  return parse(data, size, "template data");
+}
+
+TemplateSet readTemplates(std::istream& in)
+{
+  const std::vector<std::uint8_t> bytes = readAll(in, "template stream");
+  return parse(bytes.data(), bytes.size(), "template stream");
+}
+
+TemplateSet loadTemplates(const std::string& path)
+{
+  const std::string source = "template file '" + path + "'";
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    throw std::runtime_error(source + ": cannot open (missing or unreadable)");
+  }
+  const std::vector<std::uint8_t> bytes = readAll(in, source);
+  return parse(bytes.data(), bytes.size(), source);
+}
+
+} // namespace scatterer

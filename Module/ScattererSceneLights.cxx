@@ -1,0 +1,56 @@
+#include "ScattererSceneLights.h"
+
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkMath.h"
+#include "vtkRenderer.h"
+#include "vtkVolumeProperty.h"
+
+namespace scatterer_scene
+{
+LightSet CollectLights(vtkRenderer* renderer, vtkVolumeProperty* property)
+{
+  LightSet set;
+  const double kd = property->GetDiffuse(0);
+  const double ka = property->GetAmbient(0);
+  vtkLightCollection* lights = renderer->GetLights();
+  vtkCollectionSimpleIterator it;
+  vtkLight* light;
+  for (lights->InitTraversal(it); (light = lights->GetNextLight(it));)
+  {
+    if (!light->GetSwitch() || light->GetIntensity() <= 0.0)
+    {
+      continue;
+    }
+    if (set.Count() >= kMaxLights)
+    {
+      ++set.Skipped;
+      continue;
+    }
+    // The renderer has already placed headlights and camera lights for this
+    // frame (vtkRenderer::UpdateLightsGeometryToFollowCamera), so the
+    // transformed position and focal point are in world coordinates.
+    double position[3], focal[3];
+    light->GetTransformedPosition(position);
+    light->GetTransformedFocalPoint(focal);
+    double toLight[3] = { position[0] - focal[0], position[1] - focal[1], position[2] - focal[2] };
+    if (vtkMath::Normalize(toLight) == 0.0)
+    {
+      toLight[2] = 1.0;
+    }
+    const double intensity = light->GetIntensity();
+    const double* diffuse = light->GetDiffuseColor();
+    const double* ambient = light->GetAmbientColor();
+    for (int c = 0; c < 3; ++c)
+    {
+      set.Direction.push_back(static_cast<float>(toLight[c]));
+      set.Position.push_back(static_cast<float>(position[c]));
+      set.Color.push_back(static_cast<float>(kd * diffuse[c] * intensity));
+      set.Ambient[c] += static_cast<float>(ka * ambient[c] * intensity);
+    }
+    set.Positional.push_back(light->GetPositional() ? 1 : 0);
+    set.AnyPositional = set.AnyPositional || light->GetPositional();
+  }
+  return set;
+}
+}

@@ -1,0 +1,34 @@
+// The renderer's lights as the illumination shader sees them: world-space
+// directions toward each light (or positions), colours scaled by the volume
+// property's diffuse coefficient and the light's intensity, and the summed
+// ambient term. Covers VTK's headlight, camera lights and scene lights,
+// directional and positional, up to VTK's limit of 6 lights in its volume shader.
+#ifndef ScattererSceneLights_h
+#define ScattererSceneLights_h
+
+#include <vector>
+
+class vtkRenderer;
+class vtkVolumeProperty;
+
+namespace scatterer_scene
+{
+struct LightSet
+{
+  std::vector<float> Direction;  ///< 3 per light: unit vector toward a directional light
+  std::vector<float> Position;   ///< 3 per light: world position of a positional light
+  std::vector<int> Positional;   ///< 1 per light
+  std::vector<float> Color;      ///< 3 per light: kd * diffuse colour * intensity
+  float Ambient[3] = { 0, 0, 0 }; ///< ka * sum of ambient colour * intensity
+  bool AnyPositional = false;
+  int Skipped = 0;                ///< switched-on lights beyond the limit
+  int Count() const { return static_cast<int>(this->Positional.size()); }
+};
+
+constexpr int kMaxLights = 6;
+
+/** Collects the switched-on lights of @p renderer (call during rendering). */
+LightSet CollectLights(vtkRenderer* renderer, vtkVolumeProperty* property);
+}
+
+#endif

@@ -1,0 +1,185 @@
+#include "ScattererSceneMaterials.h"
+
+#include "vtkColorTransferFunction.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkVolumeProperty.h"
+
+#include <scatterer/Snell.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace scatterer_scene
+{
+namespace
+{
+constexpr int kSamples = 2048;
+constexpr double kVisible = 1e-4; // opacity below this is "nothing there"
+
+// The template's opacity is the transfer function's opacity itself: the
+// paper's 1 - T(d), with T the transfer function. The template radius (a world
+// length the user sets) only scales where the photons land, so radius changes
+// never regenerate templates and dense materials keep a useful photon spread.
+double TemplateOpacity(double alphaUnit)
+{
+  return std::isfinite(alphaUnit) ? std::min(std::max(alphaUnit, 0.0), 1.0) : 1.0;
+}
+
+double MaxOpacity(vtkPiecewiseFunction* opacity, double lo, double hi)
+{
+  double best = std::max(opacity->GetValue(lo), opacity->GetValue(hi));
+  for (int i = 0; i < opacity->GetSize(); ++i)
+  {
+    double node[4];
+    opacity->GetNodeValue(i, node);
+    if (node[0] >= lo && node[0] <= hi)
+    {
+      best = std::max(best, node[1]);
+    }
+  }
+  return best;
+}
+
+float Normalize(double value, const double range[2])
+{
+  const double span = range[1] - range[0];
+  return static_cast<float>(span > 0 ? (value - range[0]) / span : 0.0);
+}
+
+SceneMaterial Make(double lo, double hi, double alphaUnit, double n, const double color[3],
+  const double dataRange[2])
+{
+  SceneMaterial m;
+  m.Physics.opacity = TemplateOpacity(alphaUnit);
+  m.Physics.refractiveIndex = n;
+  m.Physics.diffuse = glm::vec3(color[0], color[1], color[2]);
+  m.Physics.selector = scatterer::Selector::range(lo, hi);
+  m.OpacityPerUnit = alphaUnit;
+  m.Range[0] = Normalize(lo, dataRange);
+  m.Range[1] = Normalize(hi, dataRange);
+  return m;
+}
+}
+
+MaterialSet BuildMaterials(const std::vector<RequestedMaterial>& requested,
+  vtkVolumeProperty* property, const double dataRange[2])
+{
+  MaterialSet set;
+  vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
+  if (!requested.empty())
+  {
+    for (const auto& r : requested)
+    {
+      if (static_cast<int>(set.Materials.size()) >= kMaxMaterials)
+      {
+        ++set.Dropped;
+        continue;
+      }
+      const double lo = r.IsLabel ? r.Label - 0.5 : r.Lo;
+      const double hi = r.IsLabel ? r.Label + 0.5 : r.Hi;
+      auto m = Make(lo, hi, MaxOpacity(opacity, lo, hi), r.RefractiveIndex, r.Color, dataRange);
+      if (r.IsLabel)
+      {
+        m.Physics.selector = scatterer::Selector::labelId(r.Label);
+      }
+      set.Materials.push_back(m);
+    }
+    return set;
+  }
+
+  // Derive: intervals of the data range where the opacity TF is visible.
+  struct Interval
+  {
+    double Lo, Hi, MaxAlpha, Weight, WeightedScalar;
+  };
+  std::vector<Interval> intervals;
+  const double step = (dataRange[1] - dataRange[0]) / (kSamples - 1);
+  bool inside = false;
+  for (int i = 0; i < kSamples; ++i)
+  {
+    const double s = dataRange[0] + i * step;
+    const double a = opacity->GetValue(s);
+    if (a > kVisible)
+    {
+      if (!inside)
+      {
+        intervals.push_back({ s, s, 0.0, 0.0, 0.0 });
+        inside = true;
+      }
+      Interval& cur = intervals.back();
+      cur.Hi = s;
+      cur.MaxAlpha = std::max(cur.MaxAlpha, a);
+      cur.Weight += a;
+      cur.WeightedScalar += a * s;
+    }
+    else
+    {
+      inside = false;
+    }
+  }
+  if (static_cast<int>(intervals.size()) > kMaxMaterials)
+  {
+    // Keep the intervals that hold the most opacity; the rest stay unlit.
+    std::vector<Interval> sorted = intervals;
+    std::sort(sorted.begin(), sorted.end(),
+      [](const Interval& a, const Interval& b) { return a.Weight > b.Weight; });
+    const double cut = sorted[kMaxMaterials - 1].Weight;
+    std::vector<Interval> kept;
+    for (const auto& iv : intervals)
+    {
+      if (iv.Weight >= cut && static_cast<int>(kept.size()) < kMaxMaterials)
+      {
+        kept.push_back(iv);
+      }
+    }
+    set.Dropped = static_cast<int>(intervals.size() - kept.size());
+    intervals = kept;
+  }
+  vtkColorTransferFunction* colorTF = property->GetRGBTransferFunction(0);
+  for (size_t k = 0; k < intervals.size(); ++k)
+  {
+    const Interval& iv = intervals[k];
+    // Half a sample of slack on both ends so the interval's own edges classify.
+    const double lo = iv.Lo - 0.5 * step, hi = iv.Hi + 0.5 * step;
+    double color[3] = { 1.0, 1.0, 1.0 };
+    if (colorTF && property->GetColorChannels(0) == 3)
+    {
+      colorTF->GetColor(iv.WeightedScalar / iv.Weight, color);
+    }
+    // Denser classes are taken to be optically denser: 1.33 (water-like) upward.
+    const double n = 1.33 + 0.12 * static_cast<double>(k);
+    set.Materials.push_back(Make(lo, hi, iv.MaxAlpha, n, color, dataRange));
+  }
+  return set;
+}
+
+std::vector<float> SpeedRatios(const MaterialSet& set)
+{
+  const size_t n = set.Materials.size();
+  std::vector<float> ratios(n * n, 1.0f);
+  for (size_t a = 0; a < n; ++a)
+  {
+    for (size_t b = 0; b < n; ++b)
+    {
+      ratios[a * n + b] = static_cast<float>(scatterer::speedRatio(
+        set.Materials[a].Physics.refractiveIndex, set.Materials[b].Physics.refractiveIndex));
+    }
+  }
+  return ratios;
+}
+
+std::vector<float> OpacityRatios(const MaterialSet& set)
+{
+  const size_t n = set.Materials.size();
+  std::vector<float> ratios(n * n, 1.0f);
+  for (size_t a = 0; a < n; ++a)
+  {
+    for (size_t b = 0; b < n; ++b)
+    {
+      const double oa = set.Materials[a].Physics.opacity, ob = set.Materials[b].Physics.opacity;
+      ratios[a * n + b] = ob > 0 ? static_cast<float>(std::min(1.0, oa / ob)) : 1.0f;
+    }
+  }
+  return ratios;
+}
+}

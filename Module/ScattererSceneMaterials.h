@@ -1,0 +1,61 @@
+// Materials of a scene, as the template generator and the illumination shader
+// need them: physical parameters for the generator (scatterer::Material) and
+// the scalar range in the transfer-function table's coordinates for the shader.
+//
+// Without user materials they are derived from the scalar opacity transfer
+// function: every interval of the data range where the opacity is above zero
+// becomes one material (the CT head scene: skin and bone). So a scene with one
+// visible interval gets one material and no boundary code.
+#ifndef ScattererSceneMaterials_h
+#define ScattererSceneMaterials_h
+
+#include <scatterer/Material.h>
+
+#include <string>
+#include <vector>
+
+class vtkVolumeProperty;
+
+namespace scatterer_scene
+{
+/** A material a user asked for (by scalar range or label id). */
+struct RequestedMaterial
+{
+  bool IsLabel = false;
+  double Lo = 0.0, Hi = 0.0; ///< scalar range (inclusive) when !IsLabel
+  int Label = 0;             ///< label id when IsLabel
+  double RefractiveIndex = 1.4;
+  double Color[3] = { 1.0, 1.0, 1.0 };
+};
+
+struct SceneMaterial
+{
+  scatterer::Material Physics; ///< opacity (the TF's, the paper's 1 - T), n, colour, selector
+  float Range[2] = { 0, 0 };   ///< normalized to the TF table (0 = data min, 1 = data max)
+  double OpacityPerUnit = 0;   ///< the TF's largest opacity over the range (per unit distance)
+};
+
+struct MaterialSet
+{
+  std::vector<SceneMaterial> Materials;
+  int Dropped = 0; ///< derived intervals beyond the material limit (left unlit)
+};
+
+constexpr int kMaxMaterials = 8;
+
+/**
+ * Materials for one volume. @p dataRange is the finite range of the rendered
+ * scalars (what VTK maps its transfer-function tables over); @p property
+ * supplies the opacity transfer function and (for derived materials) colours.
+ */
+MaterialSet BuildMaterials(const std::vector<RequestedMaterial>& requested,
+  vtkVolumeProperty* property, const double dataRange[2]);
+
+/** Speed ratios n_m / n_k (row m = sample material) for the shader, row-major. */
+std::vector<float> SpeedRatios(const MaterialSet& set);
+
+/** Intensity factors min(1, opacity_m / opacity_k) for the shader, row-major. */
+std::vector<float> OpacityRatios(const MaterialSet& set);
+}
+
+#endif

@@ -1,0 +1,134 @@
+#include "ScattererShaderComposer.h"
+
+#include "scatterer_illumination_dec.h"
+#include "scatterer_shading_impl.h"
+#include "scatterer_shading_init.h"
+
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+namespace scatterer_shader
+{
+bool Features::operator==(const Features& o) const
+{
+  return this->Lights == o.Lights && this->Materials == o.Materials && this->Shadow == o.Shadow &&
+    this->Thin == o.Thin && this->Bleed == o.Bleed && this->Boundary == o.Boundary &&
+    this->Positional == o.Positional && this->Blend2 == o.Blend2 && this->Phong == o.Phong &&
+    this->Cached == o.Cached && this->CacheInOne == o.CacheInOne;
+}
+
+std::string Features::Describe() const
+{
+  std::ostringstream out;
+  out << (this->Cached ? "cached" : "per-sample") << " lights=" << this->Lights
+      << " materials=" << this->Materials;
+  const std::pair<bool, const char*> names[] = { { this->Shadow, "shadow" }, { this->Thin, "thin" },
+    { this->Bleed, "bleed" }, { this->Boundary, "boundary" }, { this->Positional, "positional" },
+    { this->Blend2, "blend2" }, { this->Phong, "phong" } };
+  for (const auto& n : names)
+  {
+    if (n.first)
+    {
+      out << " " << n.second;
+    }
+  }
+  return out.str();
+}
+
+std::string Preprocess(const std::string& text, const std::map<std::string, bool>& flags,
+  const std::map<std::string, std::string>& values)
+{
+  // Stack of (this block is kept, the enclosing blocks are kept).
+  std::vector<std::pair<bool, bool>> stack;
+  auto keeping = [&]() { return stack.empty() || (stack.back().first && stack.back().second); };
+  std::istringstream in(text);
+  std::string out;
+  std::string line;
+  int number = 0;
+  while (std::getline(in, line))
+  {
+    ++number;
+    const auto first = line.find_first_not_of(" \t");
+    const std::string trimmed = first == std::string::npos ? "" : line.substr(first);
+    if (trimmed.rfind("//ST::IF ", 0) == 0)
+    {
+      const std::string name = trimmed.substr(9);
+      const auto flag = flags.find(name);
+      const bool enclosing = keeping();
+      stack.emplace_back(flag != flags.end() && flag->second, enclosing);
+      continue;
+    }
+    if (trimmed == "//ST::ELSE" || trimmed == "//ST::ENDIF")
+    {
+      if (stack.empty())
+      {
+        throw std::runtime_error(
+          "shader template line " + std::to_string(number) + ": " + trimmed + " without //ST::IF");
+      }
+      if (trimmed == "//ST::ELSE")
+      {
+        stack.back().first = !stack.back().first;
+      }
+      else
+      {
+        stack.pop_back();
+      }
+      continue;
+    }
+    if (!keeping())
+    {
+      continue;
+    }
+    for (const auto& v : values)
+    {
+      const std::string key = "@" + v.first + "@";
+      for (auto pos = line.find(key); pos != std::string::npos; pos = line.find(key, pos))
+      {
+        line.replace(pos, key.size(), v.second);
+        pos += v.second.size();
+      }
+    }
+    out += line;
+    out += '\n';
+  }
+  if (!stack.empty())
+  {
+    throw std::runtime_error("shader template: an //ST::IF is not closed by //ST::ENDIF");
+  }
+  return out;
+}
+
+namespace
+{
+std::map<std::string, bool> Flags(const Features& f)
+{
+  return { { "SHADOW", f.Shadow }, { "THIN", f.Shadow && f.Thin }, { "BLEED", f.Bleed },
+    { "BOUNDARY", f.Boundary && f.Materials > 1 }, { "POSITIONAL", f.Positional },
+    { "BLEND2", f.Blend2 }, { "PHONG", f.Phong },
+    { "FETCH", f.Shadow || f.Bleed || (f.Boundary && f.Materials > 1) },
+    { "CACHED", f.Cached }, { "PERSAMPLE", !f.Cached }, { "ONETEXTURE", f.Cached && f.CacheInOne },
+    { "TWOTEXTURES", f.Cached && !f.CacheInOne } };
+}
+
+std::map<std::string, std::string> Values(const Features& f)
+{
+  return { { "LIGHTS", std::to_string(f.Lights) }, { "MATERIALS", std::to_string(f.Materials) } };
+}
+}
+
+std::string IlluminationDeclarations(const Features& features)
+{
+  return Preprocess(scatterer_illumination_dec, Flags(features), Values(features));
+}
+
+std::string ShadingInitialization(const Features& features)
+{
+  return Preprocess(scatterer_shading_init, Flags(features), Values(features));
+}
+
+std::string ShadingImplementation(const Features& features)
+{
+  return Preprocess(scatterer_shading_impl, Flags(features), Values(features));
+}
+}

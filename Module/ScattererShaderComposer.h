@@ -1,0 +1,59 @@
+// Builds the GLSL of the scatterer-template illumination for one set of
+// features, from the templates in Shaders/ (embedded at build time).
+//
+// The composer is what makes the mapper "simulate only what the scene calls
+// for": every effect that is off has no code in the result, so the driver
+// never compiles, and the GPU never branches over, work the scene does not
+// need. Plain C++ (no VTK, no OpenGL) so the unit tests can read the text.
+#ifndef ScattererShaderComposer_h
+#define ScattererShaderComposer_h
+
+#include "ScattererTemplateModule.h" // for export macro (used by the tests)
+
+#include <map>
+#include <string>
+
+namespace scatterer_shader
+{
+/** The code paths one shader carries. */
+struct SCATTERERTEMPLATE_EXPORT Features
+{
+  int Lights = 1;          ///< lights switched on (1..6, VTK's limit)
+  int Materials = 1;       ///< materials the photon test distinguishes
+  bool Shadow = true;      ///< occlusion test at each photon
+  bool Thin = true;        ///< the longer check along the photon direction (needs Shadow)
+  bool Bleed = true;       ///< photons in another material carry its colour
+  bool Boundary = true;    ///< Snell rescaling across materials (needs Materials > 1)
+  bool Positional = false; ///< some light is positional
+  bool Blend2 = false;     ///< average two templates per sample
+  bool Phong = false;      ///< keep VTK's gradient shading, darkened by the visibility
+  bool Cached = true;      ///< read the CPU-computed illumination cache instead of a photon loop
+  bool CacheInOne = true;  ///< cached: one texture (white-ish light) instead of two
+
+  /** True when any feature looks at the volume at a photon position. */
+  bool Fetch() const { return this->Shadow || this->Bleed || this->Boundary; }
+  bool operator==(const Features& o) const;
+  bool operator!=(const Features& o) const { return !(*this == o); }
+  /** e.g. "lights=1 materials=2 shadow thin bleed boundary". */
+  std::string Describe() const;
+};
+
+/**
+ * Keeps or drops `//ST::IF NAME` ... `//ST::ELSE` ... `//ST::ENDIF` blocks by
+ * @p flags (a missing name counts as false) and replaces `@NAME@` by
+ * @p values. Throws std::runtime_error on unbalanced markers.
+ */
+SCATTERERTEMPLATE_EXPORT std::string Preprocess(const std::string& text, const std::map<std::string, bool>& flags,
+  const std::map<std::string, std::string>& values);
+
+/** Functions inserted after VTK's `//VTK::ComputeRayDirection::Dec` text. */
+SCATTERERTEMPLATE_EXPORT std::string IlluminationDeclarations(const Features& features);
+
+/** Per-ray variables, inserted at `//VTK::Shading::Init` (VTK's text kept). */
+SCATTERERTEMPLATE_EXPORT std::string ShadingInitialization(const Features& features);
+
+/** The per-sample composite code that replaces `//VTK::Shading::Impl`. */
+SCATTERERTEMPLATE_EXPORT std::string ShadingImplementation(const Features& features);
+}
+
+#endif

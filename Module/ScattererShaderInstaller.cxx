@@ -1,0 +1,218 @@
+#include "ScattererShaderInstaller.h"
+
+#include "ScattererSceneLights.h"
+
+#include "vtkOpenGLShaderProperty.h"
+#include "vtkShader.h"
+#include "vtkUniforms.h"
+#include "vtkVolume.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace scatterer_shader
+{
+namespace
+{
+const char* const kDecTag = "//VTK::ComputeRayDirection::Dec";
+const char* const kImplTag = "//VTK::Shading::Impl";
+const char* const kInitTag = "//VTK::Shading::Init";
+// vtkUniforms has no sampler type: samplers are declared as int and retyped
+// after VTK's own replacements have inserted the declaration.
+const char* const kSamplerPrefix = "uniform int st_";
+
+vtkOpenGLShaderProperty* Property(vtkVolume* volume)
+{
+  return volume ? vtkOpenGLShaderProperty::SafeDownCast(volume->GetShaderProperty()) : nullptr;
+}
+
+// The replacement for (tag, first), or nullptr.
+const vtkShader::ReplacementValue* Find(vtkOpenGLShaderProperty* sp, const char* tag, bool first)
+{
+  for (const auto& r : sp->GetAllShaderReplacements())
+  {
+    if (r.first.ShaderType == vtkShader::Fragment && r.first.OriginalValue == tag &&
+      r.first.ReplaceFirst == first)
+    {
+      return &r.second;
+    }
+  }
+  return nullptr;
+}
+
+void Ensure(vtkOpenGLShaderProperty* sp, const char* tag, bool first, const std::string& text)
+{
+  const vtkShader::ReplacementValue* current = Find(sp, tag, first);
+  if (!current || current->Replacement != text || current->ReplaceAll)
+  {
+    sp->AddFragmentShaderReplacement(tag, first, text, false);
+  }
+}
+
+std::vector<std::string> IlluminationUniformNames(vtkUniforms* uniforms)
+{
+  std::vector<std::string> names;
+  for (int i = 0; i < uniforms->GetNumberOfUniforms(); ++i)
+  {
+    const char* name = uniforms->GetNthUniformName(i);
+    if (name && std::strncmp(name, "st_", 3) == 0)
+    {
+      names.emplace_back(name);
+    }
+  }
+  return names;
+}
+
+void Set3(vtkUniforms* u, const char* name, const float* values, int count)
+{
+  u->SetUniform3fv(name, count, reinterpret_cast<const float(*)[3]>(values));
+}
+}
+
+// Post-replacements that retype our sampler uniforms.
+std::vector<std::string> SamplerReplacements(vtkOpenGLShaderProperty* sp)
+{
+  std::vector<std::string> found;
+  for (const auto& r : sp->GetAllShaderReplacements())
+  {
+    if (r.first.ShaderType == vtkShader::Fragment && !r.first.ReplaceFirst &&
+      r.first.OriginalValue.rfind(kSamplerPrefix, 0) == 0)
+    {
+      found.push_back(r.first.OriginalValue);
+    }
+  }
+  return found;
+}
+
+void InstallIllumination(vtkVolume* volume, const std::string& declarations,
+  const std::string& shadingInit, const std::string& shading, const std::vector<Sampler>& samplers)
+{
+  vtkOpenGLShaderProperty* sp = Property(volume);
+  if (!sp)
+  {
+    return;
+  }
+  // Starting with VTK's own tag keeps VTK's text, so our functions come after
+  // computeOpacity, computeColor and in_volume[] are declared.
+  Ensure(sp, kDecTag, true, std::string(kDecTag) + "\n" + declarations);
+  Ensure(sp, kInitTag, true, shadingInit);
+  Ensure(sp, kImplTag, true, shading);
+  std::vector<std::string> wanted;
+  for (const auto& sampler : samplers)
+  {
+    wanted.push_back("uniform int " + sampler.Name + ";");
+    Ensure(sp, wanted.back().c_str(), false, "uniform " + sampler.Type + " " + sampler.Name + ";");
+  }
+  for (const auto& existing : SamplerReplacements(sp))
+  {
+    if (std::find(wanted.begin(), wanted.end(), existing) == wanted.end())
+    {
+      sp->ClearFragmentShaderReplacement(existing, false);
+    }
+  }
+}
+
+void RemoveUniformsExcept(vtkVolume* volume, const std::vector<std::string>& keep)
+{
+  vtkOpenGLShaderProperty* sp = Property(volume);
+  if (!sp)
+  {
+    return;
+  }
+  vtkUniforms* u = sp->GetFragmentCustomUniforms();
+  for (const auto& name : IlluminationUniformNames(u))
+  {
+    if (std::find(keep.begin(), keep.end(), name) == keep.end())
+    {
+      u->RemoveUniform(name.c_str());
+    }
+  }
+}
+
+void SetIlluminationUniforms(vtkVolume* volume, const UniformValues& v)
+{
+  vtkOpenGLShaderProperty* sp = Property(volume);
+  if (!sp || !v.Lights)
+  {
+    return;
+  }
+  vtkUniforms* u = sp->GetFragmentCustomUniforms();
+  u->SetUniformi("st_templatesPerMaterial", v.TemplatesPerMaterial);
+  u->SetUniformi("st_photonCount", v.PhotonCount);
+  u->SetUniformf("st_photonThreshold", v.PhotonThreshold);
+  u->SetUniformf("st_occlusionScale", v.OcclusionScale);
+  u->SetUniformf("st_longRange", v.LongRange);
+  u->SetUniformi("st_interval", v.Interval);
+  u->SetUniform3f("st_unlit", v.Unlit);
+  u->SetUniform3f("st_toTexX", v.ToTex[0]);
+  u->SetUniform3f("st_toTexY", v.ToTex[1]);
+  u->SetUniform3f("st_toTexZ", v.ToTex[2]);
+  const scatterer_scene::LightSet& lights = *v.Lights;
+  const int nl = lights.Count();
+  Set3(u, "st_lightDir", lights.Direction.data(), nl);
+  Set3(u, "st_lightPos", lights.Position.data(), nl);
+  Set3(u, "st_lightColor", lights.Color.data(), nl);
+  u->SetUniform1iv("st_lightPositional", nl, lights.Positional.data());
+  u->SetUniform3f("st_ambient", lights.Ambient);
+  // Brightness of an unoccluded white sample, to normalize the visibility
+  // that darkens VTK's own (Phong) shading.
+  float unlit = (lights.Ambient[0] + lights.Ambient[1] + lights.Ambient[2]) / 3.0f;
+  for (int l = 0; l < nl; ++l)
+  {
+    unlit += (lights.Color[3 * l] + lights.Color[3 * l + 1] + lights.Color[3 * l + 2]) / 3.0f;
+  }
+  u->SetUniformf("st_unlitNorm", unlit > 0.0f ? 1.0f / unlit : 1.0f);
+  const int nm = static_cast<int>(v.MaterialRanges.size() / 2);
+  u->SetUniform2fv(
+    "st_matRange", nm, reinterpret_cast<const float(*)[2]>(v.MaterialRanges.data()));
+  Set3(u, "st_matColor", v.MaterialColors.data(), nm);
+  u->SetUniform1fv("st_speedRatio", nm * nm, v.SpeedRatios.data());
+  u->SetUniform1fv("st_opacityRatio", nm * nm, v.OpacityRatios.data());
+}
+
+void RemoveIllumination(vtkVolume* volume)
+{
+  vtkOpenGLShaderProperty* sp = Property(volume);
+  if (!sp)
+  {
+    return;
+  }
+  if (Find(sp, kDecTag, true))
+  {
+    sp->ClearFragmentShaderReplacement(kDecTag, true);
+  }
+  if (Find(sp, kImplTag, true))
+  {
+    sp->ClearFragmentShaderReplacement(kImplTag, true);
+  }
+  if (Find(sp, kInitTag, true))
+  {
+    sp->ClearFragmentShaderReplacement(kInitTag, true);
+  }
+  for (const auto& sampler : SamplerReplacements(sp))
+  {
+    sp->ClearFragmentShaderReplacement(sampler, false);
+  }
+  vtkUniforms* u = sp->GetFragmentCustomUniforms();
+  for (const auto& name : IlluminationUniformNames(u))
+  {
+    u->RemoveUniform(name.c_str());
+  }
+}
+
+int CountIlluminationLeftovers(vtkVolume* volume)
+{
+  vtkOpenGLShaderProperty* sp = Property(volume);
+  if (!sp)
+  {
+    return 0;
+  }
+  int count = 0;
+  count += Find(sp, kDecTag, true) ? 1 : 0;
+  count += Find(sp, kImplTag, true) ? 1 : 0;
+  count += Find(sp, kInitTag, true) ? 1 : 0;
+  count += static_cast<int>(SamplerReplacements(sp).size());
+  count += static_cast<int>(IlluminationUniformNames(sp->GetFragmentCustomUniforms()).size());
+  return count;
+}
+}

@@ -1,0 +1,202 @@
+
+//============================================================================
+// Scatterer-template illumination (ScattererTemplate; Lee, Kwon, Shin 2016).
+// Photon offsets are in template radii; st_toTex* turn them into texture
+// coordinates (they include the template radius and the volume's transform).
+// In the cached mode (CACHED) the photon test ran on the CPU at the voxels of
+// a coarse grid (scatterer/Illumination.h) and only st_material is needed here.
+//============================================================================
+#define ST_LIGHTS @LIGHTS@
+#define ST_MATERIALS @MATERIALS@
+
+// Material of a normalized scalar (the TF-table coordinate), -1 for none.
+int st_material(float s)
+{
+  for (int m = 0; m < ST_MATERIALS; ++m)
+  {
+    if (s >= st_matRange[m].x && s <= st_matRange[m].y)
+    {
+      return m;
+    }
+  }
+  return -1;
+}
+
+//ST::IF PERSAMPLE
+// Which template of its material a sample uses: hashed from the voxel, so the
+// noise of individual templates becomes a fine, stable grain.
+int st_templateIndex(vec3 texPos, int salt)
+{
+  uvec3 v = uvec3(ivec3(texPos * vec3(textureSize(in_volume[0], 0)))) + uvec3(salt);
+  uint h = v.x * 73856093u ^ v.y * 19349663u ^ v.z * 83492791u;
+  h ^= h >> 13u;
+  h *= 0x5bd1e995u;
+  h ^= h >> 15u;
+  return int(h % uint(st_templatesPerMaterial));
+}
+
+//ST::IF FETCH
+// Normalized scalar and per-sample-distance opacity at a texture position, from
+// the nearest voxel (texelFetch: one texel, where the ray itself filters 8);
+// outside the volume there is nothing (no material, no opacity).
+vec2 st_probe(vec3 texPos)
+{
+  if (any(lessThan(texPos, vec3(0.0))) || any(greaterThanEqual(texPos, vec3(1.0))))
+  {
+    return vec2(-1.0e6, 0.0);
+  }
+  ivec3 size = textureSize(in_volume[0], 0);
+  float s = texelFetch(in_volume[0], ivec3(texPos * vec3(size)), 0).r * in_volume_scale[0].r +
+    in_volume_bias[0].r;
+  return vec2(s, computeOpacity(vec4(s)));
+}
+//ST::ENDIF
+
+//ST::IF SHADOW
+// Transmittance over `dist` template radii of matter with the per-sample
+// opacity `alpha`: (1 - alpha)^(strength * radius * dist / sampleDistance).
+// Always in [0, 1]; alpha >= 1 blocks completely.
+float st_transmittance(float alpha, float dist)
+{
+  if (alpha >= 1.0)
+  {
+    return 0.0;
+  }
+  float e = max(st_occlusionScale * dist / in_sampleDistance, 1.0e-4);
+  return pow(clamp(1.0 - alpha, 0.0, 1.0), e);
+}
+//ST::ENDIF
+
+// Photon loop over one template row. Per light: den = intensity of the photons
+// toward it, lit = the part that arrives in the sample's own material (or in
+// empty space), tinted = the part that arrives through another material,
+// coloured by it.
+void st_gatherTemplate(int row, vec3 texPos, int m, float transmittance, vec3 toLight[ST_LIGHTS],
+  inout float lit[ST_LIGHTS], inout vec3 tinted[ST_LIGHTS], inout float den[ST_LIGHTS])
+{
+  for (int j = 0; j < st_photonCount; ++j)
+  {
+    vec4 photon = texelFetch(st_templates, ivec2(j, row), 0);
+    // Photons are sorted by intensity: once ray transmittance x photon
+    // intensity is below the threshold, no later photon can show either.
+    if (photon.w <= 0.0 || transmittance * photon.w < st_photonThreshold)
+    {
+      break;
+    }
+    bool towardAny = false;
+    for (int l = 0; l < ST_LIGHTS; ++l)
+    {
+      towardAny = towardAny || dot(photon.xyz, toLight[l]) > 0.0;
+    }
+    if (!towardAny)
+    {
+      continue;
+    }
+    float weight = photon.w;
+//ST::IF BLEED
+    bool foreign = false;
+    vec3 tint = vec3(1.0);
+//ST::ENDIF
+//ST::IF FETCH
+    vec3 offset = photon.x * st_toTexX + photon.y * st_toTexY + photon.z * st_toTexZ;
+    float dist = length(photon.xyz);
+    vec2 probe = st_probe(texPos + offset);
+    int mp = st_material(probe.x);
+//ST::IF BOUNDARY
+    if (mp >= 0 && mp != m)
+    {
+      // Section 3.4: in another material light travels at n_m / n_mp of the
+      // speed, so the photon sits that much nearer or farther; its intensity
+      // scales with the opacity ratio (at most 1).
+      float speed = st_speedRatio[m * ST_MATERIALS + mp];
+      offset *= speed;
+      dist *= speed;
+      weight *= st_opacityRatio[m * ST_MATERIALS + mp];
+      probe = st_probe(texPos + offset);
+      mp = st_material(probe.x);
+    }
+//ST::ENDIF
+//ST::IF SHADOW
+    weight *= st_transmittance(probe.y, dist);
+//ST::IF THIN
+    if (weight > 0.0)
+    {
+      // Fig. 4: a thin part (an ear) sees no blocker inside the template; look
+      // further along the photon direction for the head behind it.
+      weight *= st_transmittance(st_probe(texPos + offset * st_longRange).y, dist);
+    }
+//ST::ENDIF
+//ST::ENDIF
+//ST::IF BLEED
+    if (mp >= 0 && mp != m)
+    {
+      foreign = true;
+      tint = st_matColor[mp];
+    }
+//ST::ENDIF
+//ST::ENDIF
+    for (int l = 0; l < ST_LIGHTS; ++l)
+    {
+      if (dot(photon.xyz, toLight[l]) > 0.0)
+      {
+        den[l] += photon.w;
+//ST::IF BLEED
+        if (foreign)
+        {
+          tinted[l] += weight * tint;
+          continue;
+        }
+//ST::ENDIF
+        lit[l] += weight;
+      }
+    }
+  }
+}
+
+// Illumination of a sample of material m at texPos, as a factor on its own
+// colour (st_F) and a colour added by bleeding (st_B): colour = c * F + B.
+// Unoccluded, F = ambient + sum of light colours and B = 0; occlusion only
+// lowers F and B. transmittance is what is left of the ray at this sample.
+void st_illuminate(vec3 texPos, int m, float transmittance, out vec3 F, out vec3 B)
+{
+  vec3 toLight[ST_LIGHTS];
+//ST::IF POSITIONAL
+  vec4 world = in_volumeMatrix[0] * in_textureDatasetMatrix[0] * vec4(texPos, 1.0);
+  world /= world.w;
+//ST::ENDIF
+  float lit[ST_LIGHTS];
+  float den[ST_LIGHTS];
+  vec3 tinted[ST_LIGHTS];
+  for (int l = 0; l < ST_LIGHTS; ++l)
+  {
+    toLight[l] = st_lightDir[l];
+//ST::IF POSITIONAL
+    if (st_lightPositional[l] != 0)
+    {
+      toLight[l] = normalize(st_lightPos[l] - world.xyz);
+    }
+//ST::ENDIF
+    lit[l] = 0.0;
+    den[l] = 0.0;
+    tinted[l] = vec3(0.0);
+  }
+  int firstRow = m * st_templatesPerMaterial;
+  st_gatherTemplate(firstRow + st_templateIndex(texPos, 0), texPos, m, transmittance, toLight,
+    lit, tinted, den);
+//ST::IF BLEND2
+  st_gatherTemplate(firstRow + st_templateIndex(texPos, 7919), texPos, m, transmittance, toLight,
+    lit, tinted, den);
+//ST::ENDIF
+  F = st_ambient;
+  B = vec3(0.0);
+  for (int l = 0; l < ST_LIGHTS; ++l)
+  {
+    // No photon toward this light bright enough to matter: unoccluded.
+    float inv = den[l] > 0.0 ? 1.0 / den[l] : 0.0;
+    F += st_lightColor[l] * (den[l] > 0.0 ? lit[l] * inv : 1.0);
+//ST::IF BLEED
+    B += st_lightColor[l] * tinted[l] * inv;
+//ST::ENDIF
+  }
+}
+//ST::ENDIF

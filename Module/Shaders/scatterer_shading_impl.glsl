@@ -1,0 +1,61 @@
+    // Composite step with scatterer-template illumination (ScattererTemplate).
+//ST::IF PERSAMPLE
+    st_step += 1;
+//ST::ENDIF
+    if (!g_skip)
+      {
+      vec4 scalar = texture3D(in_volume[0], g_dataPos);
+      scalar.r = scalar.r * in_volume_scale[0].r + in_volume_bias[0].r;
+      scalar = vec4(scalar.r);
+      g_srcColor = vec4(0.0);
+      g_srcColor.a = computeOpacity(scalar);
+      if (g_srcColor.a > 0.0)
+        {
+        g_srcColor = computeColor(scalar, g_srcColor.a);
+//ST::IF PERSAMPLE
+        int st_m = st_material(scalar.r);
+//ST::ELSE
+        // Cells no material touches hold "unoccluded", so every visible
+        // sample can read the cache.
+        const int st_m = 0;
+//ST::ENDIF
+//ST::IF ONETEXTURE
+        // The photon test ran on the CPU at the cache voxels; read it here
+        // (a = visibility, rgb = colour bled from other materials).
+        vec4 st_cache = texture3D(st_lightCache, g_dataPos);
+        st_F = st_cache.a * st_unlit;
+//ST::IF BLEED
+        st_B = st_cache.rgb * st_unlit;
+//ST::ENDIF
+//ST::ENDIF
+//ST::IF TWOTEXTURES
+        // The photon test ran on the CPU at the cache voxels; read it here.
+        st_F = texture3D(st_lightCache, g_dataPos).rgb * st_unlit;
+//ST::IF BLEED
+        st_B = texture3D(st_bleedCache, g_dataPos).rgb * st_unlit;
+//ST::ENDIF
+//ST::ENDIF
+//ST::IF PERSAMPLE
+        // A loop of 0 or 1 iterations rather than an if: a GPU skips a loop no
+        // lane of a SIMD group enters.
+        int st_evaluate = (st_m >= 0 &&
+          (st_m != st_cachedMaterial || st_step % st_interval == 0)) ? 1 : 0;
+        for (int st_once = 0; st_once < st_evaluate; ++st_once)
+          {
+          st_illuminate(g_dataPos, st_m, 1.0 - g_fragColor.a, st_F, st_B);
+          st_cachedMaterial = st_m;
+          }
+//ST::ENDIF
+        if (st_m >= 0)
+          {
+//ST::IF PHONG
+          // VTK's gradient shading stays; the template visibility darkens it.
+          g_srcColor.rgb = clamp((g_srcColor.rgb * st_F + st_B) * st_unlitNorm, 0.0, 1.0);
+//ST::ELSE
+          g_srcColor.rgb = clamp(g_srcColor.rgb * st_F + st_B, 0.0, 1.0);
+//ST::ENDIF
+          }
+        g_srcColor.rgb *= g_srcColor.a;
+        g_fragColor = (1.0f - g_fragColor.a) * g_srcColor + g_fragColor;
+        }
+      }

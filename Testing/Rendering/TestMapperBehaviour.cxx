@@ -1,0 +1,393 @@
+// How vtkScattererTemplateVolumeMapper behaves as a drop-in: which shader code
+// it generates for a scene, when it falls back to stock rendering (and says
+// so once), that it rebuilds the shader only when the GLSL changes, that it
+// leaves nothing behind on a volume, and that occlusion only ever darkens.
+// Renders under X (CTest runs under xvfb-run); all tests share one window.
+#include "ScattererShaderInstaller.h"
+#include "ScattererTestVolumes.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkImageData.h"
+#include "vtkLight.h"
+#include "vtkNew.h"
+#include "vtkOpenGLGPUVolumeRayCastMapper.h"
+#include "vtkOpenGLShaderProperty.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
+#include "vtkRenderWindow.h"
+#include "vtkRendererCollection.h"
+#include "vtkRenderer.h"
+#include "vtkScattererTemplateVolumeMapper.h"
+#include "vtkShader.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+namespace
+{
+constexpr int N = 48;
+
+vtkRenderWindow* Window()
+{
+  static vtkNew<vtkRenderWindow> window;
+  static bool ready = false;
+  if (!ready)
+  {
+    window->SetSize(160, 160);
+    window->SetMultiSamples(0);
+    ready = true;
+  }
+  return window;
+}
+
+// Counts events of one kind on an object.
+struct EventCounter
+{
+  int Count = 0;
+  std::string Last;
+  vtkNew<vtkCallbackCommand> Command;
+  EventCounter(vtkObject* object, unsigned long event)
+  {
+    this->Command->SetClientData(this);
+    this->Command->SetCallback([](vtkObject*, unsigned long, void* client, void* call) {
+      auto* self = static_cast<EventCounter*>(client);
+      ++self->Count;
+      self->Last = call ? static_cast<const char*>(call) : "";
+    });
+    object->AddObserver(event, this->Command);
+  }
+};
+
+struct Scene
+{
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkVolume> Volume;
+  vtkNew<vtkVolumeProperty> Property;
+  vtkSmartPointer<vtkImageData> Image;
+  vtkNew<vtkScattererTemplateVolumeMapper> Mapper;
+  vtkNew<vtkOpenGLGPUVolumeRayCastMapper> Stock;
+
+  explicit Scene(bool twoMaterials = false, int lights = 1)
+  {
+    this->Image = scatterer_testing::MakeShellBallPlate(N, VTK_UNSIGNED_CHAR);
+    scatterer_testing::ApplyShellBallPlateProperty(this->Property);
+    if (twoMaterials)
+    {
+      // A gap in the opacity between shell and ball: two derived materials.
+      vtkPiecewiseFunction* o = this->Property->GetScalarOpacity();
+      o->RemoveAllPoints();
+      o->AddPoint(0, 0);
+      o->AddPoint(80, 0);
+      o->AddPoint(100, 0.2);
+      o->AddPoint(120, 0);
+      o->AddPoint(170, 0);
+      o->AddPoint(200, 0.9);
+    }
+    for (auto* m : { static_cast<vtkGPUVolumeRayCastMapper*>(this->Mapper),
+           static_cast<vtkGPUVolumeRayCastMapper*>(this->Stock) })
+    {
+      m->SetInputData(this->Image);
+      m->AutoAdjustSampleDistancesOff();
+      m->SetSampleDistance(0.5);
+    }
+    this->Volume->SetProperty(this->Property);
+    this->Volume->SetMapper(this->Mapper);
+    this->Renderer->AddVolume(this->Volume);
+    this->Renderer->AutomaticLightCreationOff();
+    for (int l = 0; l < lights; ++l)
+    {
+      vtkNew<vtkLight> light;
+      light->SetLightTypeToSceneLight();
+      light->SetPosition(1.0, 0.4 - l, 0.8);
+      light->SetFocalPoint(0, 0, 0);
+      this->Renderer->AddLight(light);
+    }
+    vtkCamera* camera = this->Renderer->GetActiveCamera();
+    camera->SetFocalPoint(0.5 * N, 0.5 * N, 0.5 * N);
+    camera->SetPosition(2.2 * N, -0.9 * N, 1.4 * N);
+    camera->SetViewUp(0, 0, 1);
+    this->Renderer->ResetCameraClippingRange();
+    Window()->GetRenderers()->RemoveAllItems();
+    Window()->AddRenderer(this->Renderer);
+  }
+  ~Scene()
+  {
+    Window()->RemoveRenderer(this->Renderer);
+    this->Mapper->ReleaseGraphicsResources(Window());
+    this->Stock->ReleaseGraphicsResources(Window());
+  }
+
+  std::vector<unsigned char> Render()
+  {
+    Window()->Render();
+    const int* size = Window()->GetSize();
+    vtkNew<vtkUnsignedCharArray> pixels;
+    Window()->GetRGBACharPixelData(0, 0, size[0] - 1, size[1] - 1, 0, pixels);
+    const unsigned char* p = pixels->GetPointer(0);
+    return std::vector<unsigned char>(p, p + pixels->GetNumberOfValues());
+  }
+
+  std::vector<unsigned char> RenderStock()
+  {
+    this->Volume->SetMapper(this->Stock);
+    auto image = this->Render();
+    this->Volume->SetMapper(this->Mapper);
+    return image;
+  }
+
+  // The illumination GLSL currently on the volume's shader property.
+  std::string InstalledGLSL()
+  {
+    auto* sp = vtkOpenGLShaderProperty::SafeDownCast(this->Volume->GetShaderProperty());
+    std::string text;
+    for (const auto& r : sp->GetAllShaderReplacements())
+    {
+      text += r.second.Replacement;
+    }
+    return text;
+  }
+};
+
+int MaxDifference(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b)
+{
+  int worst = a.size() == b.size() ? 0 : 256;
+  for (size_t i = 0; i < a.size() && i < b.size(); ++i)
+  {
+    worst = std::max(worst, std::abs(int(a[i]) - int(b[i])));
+  }
+  return worst;
+}
+
+double MeanBrightness(const std::vector<unsigned char>& image)
+{
+  double sum = 0;
+  for (size_t i = 0; i < image.size(); i += 4)
+  {
+    sum += image[i] + image[i + 1] + image[i + 2];
+  }
+  return sum / (image.size() / 4 * 3);
+}
+}
+
+TEST(MapperBehaviour, OneMaterialSceneHasNoBoundaryOrBleedingCode)
+{
+  Scene scene;
+  scene.Render();
+  const std::string features = scene.Mapper->GetLastShaderFeatures();
+  EXPECT_NE(features.find("materials=1"), std::string::npos) << features;
+  EXPECT_EQ(features.find("boundary"), std::string::npos) << features;
+  EXPECT_EQ(features.find("bleed"), std::string::npos) << features;
+  const std::string glsl = scene.InstalledGLSL();
+  EXPECT_NE(glsl.find("st_material"), std::string::npos);
+  EXPECT_EQ(glsl.find("st_speedRatio"), std::string::npos);
+  EXPECT_EQ(glsl.find("st_bleedCache"), std::string::npos);
+}
+
+TEST(MapperBehaviour, TwoMaterialSceneGetsBoundaryAndBleeding)
+{
+  Scene scene(true);
+  scene.Mapper->SetIlluminationModeToPerSample();
+  scene.Render();
+  const std::string features = scene.Mapper->GetLastShaderFeatures();
+  EXPECT_NE(features.find("materials=2"), std::string::npos) << features;
+  EXPECT_NE(features.find("boundary"), std::string::npos) << features;
+  const std::string glsl = scene.InstalledGLSL();
+  EXPECT_NE(glsl.find("st_speedRatio"), std::string::npos);
+  EXPECT_NE(glsl.find("st_gatherTemplate"), std::string::npos);
+}
+
+TEST(MapperBehaviour, SwitchedOffEffectIsAbsentFromTheShader)
+{
+  Scene scene(true);
+  scene.Mapper->SetIlluminationModeToPerSample();
+  scene.Mapper->ShadowsEnabledOff();
+  scene.Render();
+  const std::string glsl = scene.InstalledGLSL();
+  EXPECT_EQ(glsl.find("st_transmittance"), std::string::npos);
+  EXPECT_EQ(glsl.find("st_longRange"), std::string::npos);
+  EXPECT_EQ(scene.Mapper->GetLastShaderFeatures().find("shadow"), std::string::npos);
+}
+
+TEST(MapperBehaviour, AsRequestedKeepsCodeTheSceneDoesNotNeed)
+{
+  Scene scene;
+  scene.Mapper->SetIlluminationModeToPerSample();
+  scene.Mapper->SetLongRangeMultiple(1.0); // automatic: the thin check cannot help
+  scene.Render();
+  EXPECT_EQ(scene.Mapper->GetLastShaderFeatures().find("thin"), std::string::npos);
+  scene.Mapper->SetShaderPathSelectionToAsRequested();
+  scene.Render();
+  EXPECT_NE(scene.Mapper->GetLastShaderFeatures().find("thin"), std::string::npos);
+  EXPECT_NE(scene.InstalledGLSL().find("st_longRange"), std::string::npos);
+}
+
+TEST(MapperBehaviour, NoLightMeansNoIlluminationCodeAndStockPixels)
+{
+  Scene scene(false, 0);
+  const auto ours = scene.Render();
+  EXPECT_EQ(scene.Mapper->GetLastShaderFeatures(), "stock: no light is switched on");
+  EXPECT_EQ(scatterer_shader::CountIlluminationLeftovers(scene.Volume), 0);
+  EXPECT_EQ(MaxDifference(ours, scene.RenderStock()), 0);
+}
+
+TEST(MapperBehaviour, OtherBlendModesRenderAsStockWithOneWarning)
+{
+  Scene scene;
+  EventCounter warnings(scene.Mapper, vtkCommand::WarningEvent);
+  scene.Mapper->SetBlendModeToMaximumIntensity();
+  scene.Stock->SetBlendModeToMaximumIntensity();
+  const auto first = scene.Render();
+  scene.Render();
+  EXPECT_EQ(warnings.Count, 1);
+  EXPECT_NE(warnings.Last.find("maximum intensity"), std::string::npos) << warnings.Last;
+  EXPECT_EQ(MaxDifference(first, scene.RenderStock()), 0);
+}
+
+TEST(MapperBehaviour, MultiComponentDataRendersAsStockWithOneWarning)
+{
+  Scene scene;
+  auto rgba = vtkSmartPointer<vtkImageData>::New();
+  rgba->SetDimensions(N, N, N);
+  rgba->AllocateScalars(VTK_UNSIGNED_CHAR, 2);
+  auto* p = static_cast<unsigned char*>(rgba->GetScalarPointer());
+  auto* s = static_cast<unsigned char*>(scene.Image->GetScalarPointer());
+  for (int i = 0; i < N * N * N; ++i)
+  {
+    p[2 * i] = s[i];
+    p[2 * i + 1] = static_cast<unsigned char>(255 - s[i]);
+  }
+  scene.Mapper->SetInputData(rgba);
+  scene.Stock->SetInputData(rgba);
+  EventCounter warnings(scene.Mapper, vtkCommand::WarningEvent);
+  const auto first = scene.Render();
+  scene.Render();
+  EXPECT_EQ(warnings.Count, 1);
+  EXPECT_NE(warnings.Last.find("components"), std::string::npos) << warnings.Last;
+  EXPECT_EQ(MaxDifference(first, scene.RenderStock()), 0);
+}
+
+TEST(MapperBehaviour, UniformOnlyChangesDoNotRebuildTheShader)
+{
+  for (int mode : { vtkScattererTemplateVolumeMapper::CACHED,
+         vtkScattererTemplateVolumeMapper::PER_SAMPLE })
+  {
+    Scene scene;
+    scene.Mapper->SetIlluminationMode(mode);
+    // VTK fires UpdateShaderEvent only on frames that reuse the shader.
+    EventCounter reused(scene.Mapper, vtkCommand::UpdateShaderEvent);
+    scene.Render();
+    scene.Render();
+    ASSERT_EQ(reused.Count, 1) << "mode " << mode;
+    scene.Mapper->SetOcclusionStrength(0.5);
+    scene.Mapper->SetPhotonThreshold(0.01);
+    scene.Mapper->SetTemplateRadius(3.0);
+    scene.Render();
+    EXPECT_EQ(reused.Count, 2) << "a uniform-only change rebuilt the shader (mode " << mode << ")";
+    scene.Mapper->ShadowsEnabledOff();
+    scene.Render();
+    EXPECT_EQ(reused.Count, 2) << "switching an effect off must change the shader (mode " << mode << ")";
+  }
+}
+
+TEST(MapperBehaviour, VolumeGivenToAnotherMapperKeepsNoLeftovers)
+{
+  Scene scene;
+  scene.Render();
+  ASSERT_GT(scatterer_shader::CountIlluminationLeftovers(scene.Volume), 0);
+  scene.Volume->SetMapper(scene.Stock);
+  EXPECT_EQ(scatterer_shader::CountIlluminationLeftovers(scene.Volume), 0);
+  const auto afterSwitch = scene.Render();
+  // A fresh volume with the stock mapper draws the same picture.
+  vtkNew<vtkVolume> fresh;
+  fresh->SetProperty(scene.Property);
+  fresh->SetMapper(scene.Stock);
+  scene.Renderer->RemoveVolume(scene.Volume);
+  scene.Renderer->AddVolume(fresh);
+  EXPECT_EQ(MaxDifference(afterSwitch, scene.Render()), 0);
+}
+
+TEST(MapperBehaviour, IlluminationOffLeavesNoLeftovers)
+{
+  Scene scene;
+  scene.Render();
+  scene.Mapper->IlluminationEnabledOff();
+  const auto off = scene.Render();
+  EXPECT_EQ(scatterer_shader::CountIlluminationLeftovers(scene.Volume), 0);
+  EXPECT_EQ(MaxDifference(off, scene.RenderStock()), 0);
+}
+
+TEST(MapperBehaviour, ReleaseGraphicsResourcesThenRenderGivesTheSamePicture)
+{
+  Scene scene;
+  const auto before = scene.Render();
+  scene.Mapper->ReleaseGraphicsResources(Window());
+  const auto after = scene.Render();
+  EXPECT_EQ(MaxDifference(before, after), 0);
+}
+
+TEST(MapperBehaviour, WindowResizeKeepsRendering)
+{
+  Scene scene;
+  scene.Render();
+  Window()->SetSize(120, 90);
+  const auto small = scene.Render();
+  Window()->SetSize(160, 160);
+  EXPECT_EQ(small.size(), 120u * 90u * 4u);
+  EXPECT_GT(MeanBrightness(small), 5.0);
+  EXPECT_EQ(scene.Mapper->GetLastShaderFeatures().rfind("stock", 0), std::string::npos);
+}
+
+TEST(MapperBehaviour, ShaderThatFailsToCompileFallsBackToStockWithAnError)
+{
+  Scene scene;
+  scene.Mapper->SetExtraShaderCodeForTesting("this is not GLSL;\n");
+  EventCounter errors(scene.Mapper, vtkCommand::ErrorEvent);
+  const auto image = scene.Render();
+  EXPECT_GE(errors.Count, 1);
+  EXPECT_NE(errors.Last.find("failed to compile"), std::string::npos) << errors.Last;
+  EXPECT_EQ(scene.Mapper->GetLastShaderFeatures().rfind("stock", 0), 0u);
+  EXPECT_EQ(MaxDifference(image, scene.RenderStock()), 0);
+}
+
+TEST(MapperBehaviour, OcclusionOnlyEverDarkens)
+{
+  for (int mode : { vtkScattererTemplateVolumeMapper::CACHED,
+         vtkScattererTemplateVolumeMapper::PER_SAMPLE })
+  {
+    Scene scene(true);
+    scene.Mapper->SetIlluminationMode(mode);
+    scene.Mapper->ColorBleedingEnabledOff();
+    scene.Mapper->SetOcclusionStrength(0.0);
+    const auto open = scene.Render();
+    scene.Mapper->SetOcclusionStrength(1.0);
+    const auto occluded = scene.Render();
+    int brighter = 0;
+    for (size_t i = 0; i < open.size(); ++i)
+    {
+      brighter += int(occluded[i]) > int(open[i]) + 1 ? 1 : 0;
+    }
+    EXPECT_EQ(brighter, 0) << "mode " << mode;
+    EXPECT_LT(MeanBrightness(occluded), MeanBrightness(open) - 1.0) << "mode " << mode;
+  }
+}
+
+TEST(MapperBehaviour, SeveralVolumesAndRenderersRender)
+{
+  Scene left(true);
+  Scene right;
+  left.Renderer->SetViewport(0, 0, 0.5, 1);
+  right.Renderer->SetViewport(0.5, 0, 1, 1);
+  Window()->AddRenderer(left.Renderer);
+  const auto image = right.Render();
+  EXPECT_EQ(left.Mapper->GetLastShaderFeatures().rfind("stock", 0), std::string::npos);
+  EXPECT_EQ(right.Mapper->GetLastShaderFeatures().rfind("stock", 0), std::string::npos);
+  EXPECT_GT(MeanBrightness(image), 5.0);
+}

@@ -1,0 +1,132 @@
+// The shader composer: the GLSL for a set of features carries exactly the
+// code those features need (an effect that is off is absent from the text).
+#include "ScattererShaderComposer.h"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <string>
+
+using scatterer_shader::Features;
+
+namespace
+{
+std::string All(const Features& f)
+{
+  return scatterer_shader::IlluminationDeclarations(f) +
+    scatterer_shader::ShadingInitialization(f) + scatterer_shader::ShadingImplementation(f);
+}
+
+bool Has(const std::string& text, const std::string& token)
+{
+  return text.find(token) != std::string::npos;
+}
+
+Features PerSampleAllOn()
+{
+  Features f;
+  f.Cached = false;
+  f.Materials = 2;
+  f.Lights = 2;
+  f.Positional = true;
+  f.Blend2 = true;
+  return f;
+}
+}
+
+TEST(ShaderComposer, PreprocessKeepsAndDropsBlocks)
+{
+  const std::string text = "a\n//ST::IF X\nb\n//ST::IF Y\nc\n//ST::ELSE\nd\n//ST::ENDIF\n//ST::ENDIF\ne @N@\n";
+  EXPECT_EQ(scatterer_shader::Preprocess(text, { { "X", true }, { "Y", true } }, { { "N", "7" } }),
+    "a\nb\nc\ne 7\n");
+  EXPECT_EQ(scatterer_shader::Preprocess(text, { { "X", true } }, { { "N", "7" } }), "a\nb\nd\ne 7\n");
+  EXPECT_EQ(scatterer_shader::Preprocess(text, { { "Y", true } }, {}), "a\ne @N@\n");
+}
+
+TEST(ShaderComposer, PreprocessRejectsUnbalancedMarkers)
+{
+  EXPECT_THROW(scatterer_shader::Preprocess("//ST::IF X\na\n", {}, {}), std::runtime_error);
+  EXPECT_THROW(scatterer_shader::Preprocess("a\n//ST::ENDIF\n", {}, {}), std::runtime_error);
+}
+
+TEST(ShaderComposer, NoMarkerOrPlaceholderReachesTheDriver)
+{
+  for (bool cached : { true, false })
+  {
+    Features f = PerSampleAllOn();
+    f.Cached = cached;
+    const std::string glsl = All(f);
+    EXPECT_FALSE(Has(glsl, "//ST::")) << cached;
+    EXPECT_FALSE(Has(glsl, "@LIGHTS@")) << cached;
+    EXPECT_TRUE(Has(glsl, "#define ST_LIGHTS 2")) << cached;
+    EXPECT_TRUE(Has(glsl, "#define ST_MATERIALS 2")) << cached;
+  }
+}
+
+TEST(ShaderComposer, PerSampleCarriesThePhotonLoopAndCachedDoesNot)
+{
+  Features f = PerSampleAllOn();
+  EXPECT_TRUE(Has(All(f), "st_gatherTemplate"));
+  EXPECT_TRUE(Has(All(f), "st_templates"));
+  f.Cached = true;
+  EXPECT_FALSE(Has(All(f), "st_gatherTemplate"));
+  EXPECT_TRUE(Has(All(f), "st_lightCache"));
+}
+
+TEST(ShaderComposer, EachEffectSwitchedOffIsAbsent)
+{
+  struct Case
+  {
+    const char* Name;
+    void (*Off)(Features&);
+    const char* Token; // code only that effect needs
+  };
+  const Case cases[] = {
+    { "shadow", [](Features& f) { f.Shadow = false; }, "st_transmittance" },
+    { "thin", [](Features& f) { f.Thin = false; }, "st_longRange" },
+    { "bleed", [](Features& f) { f.Bleed = false; }, "st_matColor" },
+    { "boundary", [](Features& f) { f.Boundary = false; }, "st_speedRatio" },
+    { "positional", [](Features& f) { f.Positional = false; }, "st_lightPos" },
+    { "blend2", [](Features& f) { f.Blend2 = false; }, "7919" },
+    { "one material", [](Features& f) { f.Materials = 1; }, "st_speedRatio" },
+  };
+  for (const auto& c : cases)
+  {
+    Features on = PerSampleAllOn();
+    EXPECT_TRUE(Has(All(on), c.Token)) << c.Name << " on should carry " << c.Token;
+    Features off = on;
+    c.Off(off);
+    EXPECT_FALSE(Has(All(off), c.Token)) << c.Name << " off should not carry " << c.Token;
+  }
+}
+
+TEST(ShaderComposer, CachedBleedingUsesASecondTextureOnlyForColouredLights)
+{
+  Features f;
+  f.Cached = true;
+  f.Materials = 2;
+  f.Bleed = true;
+  f.CacheInOne = true;
+  EXPECT_FALSE(Has(All(f), "st_bleedCache"));
+  EXPECT_TRUE(Has(All(f), "st_cache.rgb"));
+  f.CacheInOne = false;
+  EXPECT_TRUE(Has(All(f), "st_bleedCache"));
+  f.Bleed = false;
+  EXPECT_FALSE(Has(All(f), "st_bleedCache"));
+}
+
+TEST(ShaderComposer, PhongKeepsVtkShadingAndNormalizes)
+{
+  Features f;
+  f.Phong = true;
+  EXPECT_TRUE(Has(All(f), "st_unlitNorm"));
+  f.Phong = false;
+  EXPECT_FALSE(Has(All(f), "st_unlitNorm"));
+}
+
+TEST(ShaderComposer, DescribeNamesTheFeatures)
+{
+  Features f = PerSampleAllOn();
+  EXPECT_EQ(f.Describe(),
+    "per-sample lights=2 materials=2 shadow thin bleed boundary positional blend2");
+}
