@@ -79,4 +79,20 @@ scatterer::OcclusionField BuildOcclusionField(vtkDataArray* scalars, const int d
   });
   return field;
 }
+
+Unassigned CountUnassigned(vtkDataArray* scalars, const scatterer::OcclusionField& field)
+{
+  Unassigned result;
+  for (size_t id = 0; id < field.material.size(); ++id)
+  {
+    if (field.material[id] < 0 && field.extinction[id] > 0.0f)
+    {
+      if (result.Count++ == 0)
+      {
+        result.Example = scalars->GetComponent(static_cast<vtkIdType>(id), 0);
+      }
+    }
+  }
+  return result;
+}
 }

@@ -20,6 +20,14 @@ namespace scatterer_scene
  */
 scatterer::OcclusionField BuildOcclusionField(vtkDataArray* scalars, const int dims[3],
   const double range[2], vtkVolumeProperty* property, const MaterialSet& materials);
+
+/** Visible voxels (opacity > 0) that belong to no material, and one such value. */
+struct Unassigned
+{
+  long long Count = 0;
+  double Example = 0.0;
+};
+Unassigned CountUnassigned(vtkDataArray* scalars, const scatterer::OcclusionField& field);
 }
 
 #endif

@@ -428,7 +428,7 @@ void vtkScattererTemplateVolumeMapper::GPURender(vtkRenderer* ren, vtkVolume* vo
   const double meanSpacing = (std::abs(spacing[0]) * columnLength[0] +
                                std::abs(spacing[1]) * columnLength[1] +
                                std::abs(spacing[2]) * columnLength[2]) / 3.0;
-  plan.Radius = this->TemplateRadius > 0.0 ? this->TemplateRadius : 5.0 * meanSpacing;
+  plan.Radius = this->TemplateRadius > 0.0 ? this->TemplateRadius : 10.0 * meanSpacing;
   if (!(plan.Radius > 0.0) || !std::isfinite(plan.Radius))
   {
     warnOnce("Scatterer-template illumination needs a positive, finite voxel spacing or "
@@ -728,6 +728,21 @@ bool vtkScattererTemplateVolumeMapper::vtkInternals::UpdateCache(
   if (fieldKey.str() != this->FieldKey)
   {
     this->Field = scatterer_scene::BuildOcclusionField(scalars, dims, range, property, plan.Materials);
+    if (!this->Requested.empty())
+    {
+      const auto unassigned = scatterer_scene::CountUnassigned(scalars, this->Field);
+      if (unassigned.Count > 0)
+      {
+        std::ostringstream what;
+        what << unassigned.Count << " visible voxels (e.g. scalar value " << unassigned.Example
+             << ") belong to none of the requested materials: they are drawn and occlude, but "
+                "are lit as their nearest material (add a material for them to fix this).";
+        if (this->Warned.insert(what.str()).second)
+        {
+          vtkWarningWithObjectMacro(self, << what.str());
+        }
+      }
+    }
     this->FieldKey = fieldKey.str();
     this->GridKey.clear();
   }

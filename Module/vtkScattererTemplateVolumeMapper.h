@@ -28,7 +28,8 @@
  * (everything below except materials) do not call Modified(): the stock mapper
  * rebuilds its shader whenever the mapper's MTime moves, and a slider drag must
  * not recompile. They bump GetIlluminationMTime() instead and take effect on
- * the next render. NaN values are rejected with an error; others are clamped.
+ * the next render. NaN values are rejected with an error; values outside a
+ * parameter's range are clamped with a warning.
  *
  * @sa vtkOpenGLGPUVolumeRayCastMapper
  */
@@ -43,8 +44,8 @@
 #include <string> // for GetLastShaderFeatures
 
 /**
- * Like vtkSetClampMacro, but without Modified() (see the class comment) and
- * rejecting NaN with an error that names the parameter.
+ * Like vtkSetClampMacro, but without Modified() (see the class comment),
+ * rejecting NaN with an error and warning when it clamps, naming the parameter.
  */
 #define vtkScattererSetClampMacro(name, type, min, max)                                            \
   virtual void Set##name(type _arg)                                                                \
@@ -55,6 +56,11 @@
       return;                                                                                      \
     }                                                                                              \
     const type clamped = (_arg < min ? min : (_arg > max ? max : _arg));                           \
+    if (clamped != _arg)                                                                           \
+    {                                                                                              \
+      vtkWarningMacro(<< "Set" #name ": " << _arg << " is outside [" << min << ", " << max        \
+                      << "]; using " << clamped << ".");                                           \
+    }                                                                                              \
     if (this->name != clamped)                                                                     \
     {                                                                                              \
       this->name = clamped;                                                                        \

@@ -55,10 +55,14 @@ vec2 st_probe(vec3 texPos)
 //ST::IF SHADOW
 // Transmittance over `dist` template radii of matter with the per-sample
 // opacity `alpha`: (1 - alpha)^(strength * radius * dist / sampleDistance).
-// Always in [0, 1]; alpha >= 1 blocks completely.
+// Always in [0, 1]; alpha >= 1 blocks completely, NaN counts as empty.
 float st_transmittance(float alpha, float dist)
 {
-  if (alpha >= 1.0)
+  if (!(alpha > 0.0))
+  {
+    return 1.0; // nothing there, or NaN from a NaN voxel: no occluder
+  }
+  if (!(alpha < 1.0))
   {
     return 0.0;
   }
@@ -118,14 +122,6 @@ void st_gatherTemplate(int row, vec3 texPos, int m, float transmittance, vec3 to
 //ST::ENDIF
 //ST::IF SHADOW
     weight *= st_transmittance(probe.y, dist);
-//ST::IF THIN
-    if (weight > 0.0)
-    {
-      // Fig. 4: a thin part (an ear) sees no blocker inside the template; look
-      // further along the photon direction for the head behind it.
-      weight *= st_transmittance(st_probe(texPos + offset * st_longRange).y, dist);
-    }
-//ST::ENDIF
 //ST::ENDIF
 //ST::IF BLEED
     if (mp >= 0 && mp != m)
@@ -140,14 +136,26 @@ void st_gatherTemplate(int row, vec3 texPos, int m, float transmittance, vec3 to
       if (dot(photon.xyz, toLight[l]) > 0.0)
       {
         den[l] += photon.w;
+        float w = weight;
+//ST::IF THIN
+        if (w > 0.0)
+        {
+          // Fig. 4: a thin part (an ear) sees no blocker inside the template;
+          // look on from the photon toward the light for the head behind it.
+          vec3 towardLight = toLight[l].x * st_toTexX + toLight[l].y * st_toTexY +
+            toLight[l].z * st_toTexZ;
+          w *= st_transmittance(
+            st_probe(texPos + offset + towardLight * ((st_longRange - 1.0) * dist)).y, dist);
+        }
+//ST::ENDIF
 //ST::IF BLEED
         if (foreign)
         {
-          tinted[l] += weight * tint;
+          tinted[l] += w * tint;
           continue;
         }
 //ST::ENDIF
-        lit[l] += weight;
+        lit[l] += w;
       }
     }
   }

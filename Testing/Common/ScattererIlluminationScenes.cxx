@@ -34,6 +34,8 @@ vtkSmartPointer<vtkLight> DirectionalLight(double x, double y, double z, double 
   light->SetPosition(x, y, z);
   light->SetFocalPoint(0, 0, 0);
   light->SetColor(r, g, b);
+  // Some ambient light, so regions in full shadow still show their shape.
+  light->SetAmbientColor(0.4 * r, 0.4 * g, 0.4 * b);
   return light;
 }
 

@@ -3,6 +3,7 @@
 // so once), that it rebuilds the shader only when the GLSL changes, that it
 // leaves nothing behind on a volume, and that occlusion only ever darkens.
 // Renders under X (CTest runs under xvfb-run); all tests share one window.
+#include "ScattererRenderHarness.h"
 #include "ScattererShaderInstaller.h"
 #include "ScattererTestVolumes.h"
 
@@ -37,34 +38,12 @@ constexpr int N = 48;
 
 vtkRenderWindow* Window()
 {
-  static vtkNew<vtkRenderWindow> window;
-  static bool ready = false;
-  if (!ready)
-  {
-    window->SetSize(160, 160);
-    window->SetMultiSamples(0);
-    ready = true;
-  }
-  return window;
+  return scatterer_testing::SharedWindow();
 }
 
-// Counts events of one kind on an object.
-struct EventCounter
-{
-  int Count = 0;
-  std::string Last;
-  vtkNew<vtkCallbackCommand> Command;
-  EventCounter(vtkObject* object, unsigned long event)
-  {
-    this->Command->SetClientData(this);
-    this->Command->SetCallback([](vtkObject*, unsigned long, void* client, void* call) {
-      auto* self = static_cast<EventCounter*>(client);
-      ++self->Count;
-      self->Last = call ? static_cast<const char*>(call) : "";
-    });
-    object->AddObserver(event, this->Command);
-  }
-};
+using scatterer_testing::EventCounter;
+using scatterer_testing::MaxDifference;
+using scatterer_testing::MeanBrightness;
 
 struct Scene
 {
@@ -125,15 +104,7 @@ struct Scene
     this->Stock->ReleaseGraphicsResources(Window());
   }
 
-  std::vector<unsigned char> Render()
-  {
-    Window()->Render();
-    const int* size = Window()->GetSize();
-    vtkNew<vtkUnsignedCharArray> pixels;
-    Window()->GetRGBACharPixelData(0, 0, size[0] - 1, size[1] - 1, 0, pixels);
-    const unsigned char* p = pixels->GetPointer(0);
-    return std::vector<unsigned char>(p, p + pixels->GetNumberOfValues());
-  }
+  std::vector<unsigned char> Render() { return scatterer_testing::RenderAndGrab(Window()); }
 
   std::vector<unsigned char> RenderStock()
   {
@@ -156,25 +127,6 @@ struct Scene
   }
 };
 
-int MaxDifference(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b)
-{
-  int worst = a.size() == b.size() ? 0 : 256;
-  for (size_t i = 0; i < a.size() && i < b.size(); ++i)
-  {
-    worst = std::max(worst, std::abs(int(a[i]) - int(b[i])));
-  }
-  return worst;
-}
-
-double MeanBrightness(const std::vector<unsigned char>& image)
-{
-  double sum = 0;
-  for (size_t i = 0; i < image.size(); i += 4)
-  {
-    sum += image[i] + image[i + 1] + image[i + 2];
-  }
-  return sum / (image.size() / 4 * 3);
-}
 }
 
 TEST(MapperBehaviour, OneMaterialSceneHasNoBoundaryOrBleedingCode)

@@ -38,7 +38,33 @@ struct Lookup {
     sigma = field.extinction[id];
     material = field.material[id];
   }
+
+  // Extinction integrated along the segment a -> b (index space) whose world
+  // length is `worldLength`, from midpoint samples at most `step` voxels apart,
+  // leaving out the first `skip` voxels (the sample's own neighbourhood is the
+  // scattering medium the template models, not an occluder). With step 0.7 a
+  // one-voxel opaque sheet on the segment is never stepped over.
+  float opticalDepth(const glm::vec3& a, const glm::vec3& b, float worldLength, float step,
+    float skip) const
+  {
+    const float len = glm::length(b - a);
+    if (len <= skip) {
+      return 0.0f;
+    }
+    const float from = skip / len; // fraction of the segment left out
+    const float span = (len - skip);
+    const int n = std::min(64, std::max(1, static_cast<int>(std::ceil(span / step))));
+    float sum = 0.0f;
+    for (int j = 0; j < n; ++j) {
+      float sigma;
+      int material;
+      at(a + (b - a) * (from + (1.0f - from) * (j + 0.5f) / n), sigma, material);
+      sum += sigma;
+    }
+    return sum * worldLength * (1.0f - from) / n;
+  }
 };
+
 
 // The same voxel hash as the shader's st_templateIndex.
 int templateIndex(int i, int j, int k, int salt, int count)
@@ -54,7 +80,10 @@ int templateIndex(int i, int j, int k, int salt, int count)
 
 std::uint8_t toByte(float v)
 {
-  return static_cast<std::uint8_t>(std::lround(std::min(std::max(v, 0.0f), 1.0f) * 255.0f));
+  if (!(v >= 0.0f)) {
+    return 0; // negative or NaN (never expected: every factor is finite and >= 0)
+  }
+  return static_cast<std::uint8_t>(std::lround(std::min(v, 1.0f) * 255.0f));
 }
 
 void validate(const OcclusionField& field, const std::vector<std::vector<Template>>& templates,
@@ -85,6 +114,58 @@ void validate(const OcclusionField& field, const std::vector<std::vector<Templat
     s.templatesPerEstimate > 1024 || s.lights.empty() || s.lights.size() > 64) {
     throw std::invalid_argument("computeIllumination: radius, strength, long range, threshold, photon "
                                 "cap, templates per estimate or light count out of range");
+  }
+}
+
+// Cells without material get the mean of their computed face neighbours, for
+// `passes` rings: a ray sample at a surface reads the cache trilinearly, and
+// must not mix in "unoccluded" values from the empty cells just outside.
+void dilate(IlluminationGrid& grid, std::vector<std::uint8_t>& computed, int passes)
+{
+  const int nx = grid.dims[0], ny = grid.dims[1], nz = grid.dims[2];
+  auto index = [&](int i, int j, int k) {
+    return static_cast<size_t>(i) + static_cast<size_t>(nx) * (static_cast<size_t>(j) + static_cast<size_t>(ny) * k);
+  };
+  const int offsets[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  for (int pass = 0; pass < passes; ++pass) {
+    std::vector<std::uint8_t> next = computed;
+    for (int k = 0; k < nz; ++k) {
+      for (int j = 0; j < ny; ++j) {
+        for (int i = 0; i < nx; ++i) {
+          const size_t id = index(i, j, k);
+          if (computed[id]) {
+            continue;
+          }
+          int sum[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+          int count = 0;
+          for (const auto& o : offsets) {
+            const int a = i + o[0], b = j + o[1], c = k + o[2];
+            if (a < 0 || b < 0 || c < 0 || a >= nx || b >= ny || c >= nz || !computed[index(a, b, c)]) {
+              continue;
+            }
+            const size_t n = index(a, b, c);
+            for (int ch = 0; ch < 4; ++ch) {
+              sum[ch] += grid.light[4 * n + ch];
+              if (!grid.bleed.empty()) {
+                sum[4 + ch] += grid.bleed[4 * n + ch];
+              }
+            }
+            ++count;
+          }
+          if (count == 0) {
+            continue;
+          }
+          for (int ch = 0; ch < 4; ++ch) {
+            grid.light[4 * id + ch] = static_cast<std::uint8_t>((sum[ch] + count / 2) / count);
+            if (!grid.bleed.empty()) {
+              grid.bleed[4 * id + ch] = static_cast<std::uint8_t>((sum[4 + ch] + count / 2) / count);
+            }
+          }
+          next[id] = 1;
+        }
+      }
+    }
+    computed.swap(next);
   }
 }
 
@@ -139,12 +220,17 @@ IlluminationGrid computeIllumination(const OcclusionField& field,
   const glm::vec3 invUnlit(unlit.x > 0 ? 1.0f / unlit.x : 0.0f, unlit.y > 0 ? 1.0f / unlit.y : 0.0f,
     unlit.z > 0 ? 1.0f / unlit.z : 0.0f);
   const glm::mat3 worldToIndex = glm::inverse(s.indexToWorld);
+  // The voxels a cache cell stands for are the scattering medium the template
+  // models, not occluders: shadow rays start outside the cell's own extent
+  // (one voxel at full resolution). Without this, a cell centred inside a
+  // thin plate would shadow the plate's own lit face.
+  const float ownNeighbourhood = 0.5f + 0.5f * std::max({1.0f, static_cast<float>(field.dims[0]) / s.cacheDims[0],
+    static_cast<float>(field.dims[1]) / s.cacheDims[1], static_cast<float>(field.dims[2]) / s.cacheDims[2]});
   const Lookup lookup{field};
   const float step[3] = {static_cast<float>(field.dims[0]) / grid.dims[0],
     static_cast<float>(field.dims[1]) / grid.dims[1], static_cast<float>(field.dims[2]) / grid.dims[2]};
-  // exp(-k sigma R d): the optical depth over d template radii of matter with extinction sigma.
-  const float depthScale = s.occlusionStrength * s.radius;
 
+  std::vector<std::uint8_t> computed(cells, 0);
   std::atomic<int> nextSlice{0};
   std::atomic<std::uint64_t> tested{0};
   auto worker = [&]() {
@@ -159,24 +245,11 @@ IlluminationGrid computeIllumination(const OcclusionField& field,
           float sigma;
           int m;
           lookup.at(x, sigma, m);
-          if (m < 0) {
-            // Next to a material, estimate as that material, so trilinear
-            // reads at a surface do not mix in "unoccluded" air values.
-            const glm::vec3 near[6] = {{step[0], 0, 0}, {-step[0], 0, 0}, {0, step[1], 0},
-              {0, -step[1], 0}, {0, 0, step[2]}, {0, 0, -step[2]}};
-            for (const auto& d : near) {
-              int mn;
-              float sn;
-              lookup.at(x + d, sn, mn);
-              if (mn >= 0) {
-                m = mn;
-                break;
-              }
-            }
-          }
           if (m < 0 || m >= nm) {
-            continue; // stays unoccluded: light 255, bleed 0
+            continue; // no material: filled from its neighbours below
           }
+          computed[static_cast<size_t>(i) + static_cast<size_t>(grid.dims[0]) *
+            (static_cast<size_t>(j) + static_cast<size_t>(grid.dims[1]) * k)] = 1;
           const glm::vec3 world = s.worldOrigin + s.indexToWorld * x;
           for (int l = 0; l < nl; ++l) {
             toLight[l] = s.lights[l].positional ? s.lights[l].position - world : s.lights[l].toLight;
@@ -221,22 +294,29 @@ IlluminationGrid computeIllumination(const OcclusionField& field,
                 lookup.at(x + offset, sp, mp);
               }
               if (s.shadow) {
-                weight *= std::exp(-depthScale * sp * dist);
-                if (s.thin && weight > 0.0f) {
-                  float sf;
-                  int mf;
-                  lookup.at(x + offset * s.longRange, sf, mf);
-                  weight *= std::exp(-depthScale * sf * dist);
-                }
+                // A short shadow ray from the sample to the photon (Fig. 3).
+                weight *= std::exp(-s.occlusionStrength * lookup.opticalDepth(x, x + offset, dist * s.radius, 0.7f, ownNeighbourhood));
               }
               const bool foreign = s.bleed && mp >= 0 && mp != m;
+              const float far = (s.longRange - 1.0f) * dist * s.radius; // world length
               for (int l = 0; l < nl; ++l) {
                 if (glm::dot(photon.position, toLight[l]) > 0.0f) {
                   den[l] += photon.intensity;
+                  float w = weight;
+                  if (s.shadow && s.thin && w > 0.0f && far > 0.0f) {
+                    // Thin parts (Fig. 4): from the photon, march on toward
+                    // the light for (longRange - 1) photon offsets, so an ear
+                    // behind the head, or anything behind a thin opaque sheet,
+                    // stays dark.
+                    const glm::vec3 start = x + offset;
+                    const glm::vec3 end = start + worldToIndex * (toLight[l] * far);
+                    w *= std::exp(-s.occlusionStrength * lookup.opticalDepth(start, end, far, 0.7f,
+                      std::max(0.0f, ownNeighbourhood - glm::length(offset))));
+                  }
                   if (foreign) {
-                    tinted[l] += weight * s.materialColors[mp];
+                    tinted[l] += w * s.materialColors[mp];
                   } else {
-                    lit[l] += weight;
+                    lit[l] += w;
                   }
                 }
               }
@@ -287,6 +367,7 @@ IlluminationGrid computeIllumination(const OcclusionField& field,
     th.join();
   }
   grid.photonsTested = tested;
+  dilate(grid, computed, 2);
   return grid;
 }
 

@@ -10,6 +10,13 @@
 //
 // Units: positions in volume index space (voxel i of axis a at index i);
 // photon offsets in template radii; extinction in 1 / world length.
+//
+// Occlusion of a photon is the transmittance of a short shadow ray from the
+// point to the photon, exp(-k * integral of extinction), marched at most 0.7
+// voxel per step, so a one-voxel opaque sheet in between always blocks it; the
+// thin-part check marches on from the photon toward each light for
+// (longRange - 1) times the photon's offset (the paper looks along the photon
+// direction; toward the light also stops light leaking through thin sheets).
 #pragma once
 
 #include <scatterer/Template.h>

@@ -1,0 +1,90 @@
+#include "ScattererRenderHarness.h"
+
+#include "vtkImageData.h"
+#include "vtkPNGWriter.h"
+#include "vtkPointData.h"
+#include "vtkRenderWindow.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <cstdlib>
+
+namespace scatterer_testing
+{
+vtkRenderWindow* SharedWindow()
+{
+  static vtkNew<vtkRenderWindow> window;
+  static bool ready = false;
+  if (!ready)
+  {
+    window->SetSize(160, 160);
+    window->SetMultiSamples(0);
+    ready = true;
+  }
+  return window;
+}
+
+std::vector<unsigned char> RenderAndGrab(vtkRenderWindow* window)
+{
+  window->Render();
+  const int* size = window->GetSize();
+  vtkNew<vtkUnsignedCharArray> pixels;
+  window->GetRGBACharPixelData(0, 0, size[0] - 1, size[1] - 1, 0, pixels);
+  const unsigned char* p = pixels->GetPointer(0);
+  return std::vector<unsigned char>(p, p + pixels->GetNumberOfValues());
+}
+
+unsigned int TakeGLError()
+{
+  unsigned int first = 0;
+  for (GLenum e = glGetError(); e != GL_NO_ERROR; e = glGetError())
+  {
+    first = first ? first : e;
+  }
+  return first;
+}
+
+int MaxDifference(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b)
+{
+  int worst = a.size() == b.size() ? 0 : 256;
+  for (size_t i = 0; i < a.size() && i < b.size(); ++i)
+  {
+    worst = std::max(worst, std::abs(int(a[i]) - int(b[i])));
+  }
+  return worst;
+}
+
+void SavePng(const std::string& path, const std::vector<unsigned char>& rgba, int w, int h)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(w, h, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 4);
+  std::copy(rgba.begin(), rgba.end(), static_cast<unsigned char*>(image->GetScalarPointer()));
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputData(image);
+  writer->SetFileName(path.c_str());
+  writer->Write();
+}
+
+double MeanBrightness(const std::vector<unsigned char>& image)
+{
+  double sum = 0;
+  for (size_t i = 0; i + 3 < image.size(); i += 4)
+  {
+    sum += image[i] + image[i + 1] + image[i + 2];
+  }
+  return image.empty() ? 0.0 : sum / (image.size() / 4 * 3);
+}
+
+EventCounter::EventCounter(vtkObject* object, unsigned long event)
+{
+  this->Command->SetClientData(this);
+  this->Command->SetCallback([](vtkObject*, unsigned long, void* client, void* call) {
+    auto* self = static_cast<EventCounter*>(client);
+    ++self->Count;
+    self->Last = call ? static_cast<const char*>(call) : "";
+  });
+  object->AddObserver(event, this->Command);
+}
+}

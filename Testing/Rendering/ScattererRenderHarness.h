@@ -1,0 +1,46 @@
+// Shared helpers for the GoogleTest programs that render: one render window
+// for the whole program (opening X connections one after another can fail
+// under Xvfb), pixel read-back, image comparisons and event counting.
+#ifndef ScattererRenderHarness_h
+#define ScattererRenderHarness_h
+
+#include "vtkCallbackCommand.h"
+#include "vtkNew.h"
+
+#include <string>
+#include <vector>
+
+class vtkObject;
+class vtkRenderWindow;
+
+namespace scatterer_testing
+{
+/** The program's one render window (160x160, no multisampling). */
+vtkRenderWindow* SharedWindow();
+
+/** Renders the window and returns its RGBA pixels. */
+std::vector<unsigned char> RenderAndGrab(vtkRenderWindow* window);
+
+/** OpenGL errors raised since the last call (0 = none); clears them. */
+unsigned int TakeGLError();
+
+/** Largest channel difference (256 if the sizes differ). */
+int MaxDifference(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b);
+
+/** Writes RGBA pixels of a w x h image to a PNG (to look at a failure). */
+void SavePng(const std::string& path, const std::vector<unsigned char>& rgba, int w, int h);
+
+/** Mean of the RGB channels. */
+double MeanBrightness(const std::vector<unsigned char>& image);
+
+/** Counts events of one kind on an object and keeps the last message. */
+struct EventCounter
+{
+  int Count = 0;
+  std::string Last;
+  vtkNew<vtkCallbackCommand> Command;
+  EventCounter(vtkObject* object, unsigned long event);
+};
+}
+
+#endif
