@@ -1,0 +1,191 @@
+// Bad input gets a clear message and stock rendering or a clean no-op, never
+// a crash (CTest label "hard"; cases listed in docs/hard-cases.md).
+#include "ScattererRenderHarness.h"
+#include "ScattererTestVolumes.h"
+
+#include "vtkCamera.h"
+#include "vtkImageData.h"
+#include "vtkLight.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLGPUVolumeRayCastMapper.h"
+#include "vtkOutputWindow.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkPolyData.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkRendererCollection.h"
+#include "vtkScattererTemplateVolumeMapper.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <string>
+
+namespace
+{
+// Collects everything VTK reports (errors and warnings from any object).
+class CapturingOutputWindow : public vtkOutputWindow
+{
+public:
+  static CapturingOutputWindow* New();
+  vtkTypeMacro(CapturingOutputWindow, vtkOutputWindow);
+  void DisplayText(const char* text) override { this->Text += text ? text : ""; }
+  std::string Text;
+};
+vtkStandardNewMacro(CapturingOutputWindow);
+
+struct Capture
+{
+  vtkNew<CapturingOutputWindow> Window;
+  vtkSmartPointer<vtkOutputWindow> Previous;
+  Capture()
+  {
+    this->Previous = vtkOutputWindow::GetInstance();
+    vtkOutputWindow::SetInstance(this->Window);
+  }
+  ~Capture() { vtkOutputWindow::SetInstance(this->Previous); }
+  bool Has(const std::string& s) const { return this->Window->Text.find(s) != std::string::npos; }
+};
+
+struct Stage
+{
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkVolume> Volume;
+  vtkNew<vtkVolumeProperty> Property;
+  vtkNew<vtkScattererTemplateVolumeMapper> Mapper;
+  Stage()
+  {
+    scatterer_testing::ApplyShellBallPlateProperty(this->Property);
+    this->Volume->SetMapper(this->Mapper);
+    this->Volume->SetProperty(this->Property);
+    this->Renderer->AddVolume(this->Volume);
+    this->Renderer->AutomaticLightCreationOff();
+    vtkNew<vtkLight> light;
+    light->SetLightTypeToSceneLight();
+    light->SetPosition(1, 0.5, 0.8);
+    light->SetFocalPoint(0, 0, 0);
+    this->Renderer->AddLight(light);
+    this->Renderer->GetActiveCamera()->SetPosition(80, -40, 60);
+    this->Renderer->GetActiveCamera()->SetFocalPoint(16, 16, 16);
+    vtkRenderWindow* w = scatterer_testing::SharedWindow();
+    w->GetRenderers()->RemoveAllItems();
+    w->AddRenderer(this->Renderer);
+  }
+  ~Stage()
+  {
+    scatterer_testing::SharedWindow()->RemoveRenderer(this->Renderer);
+    this->Mapper->ReleaseGraphicsResources(scatterer_testing::SharedWindow());
+  }
+  std::vector<unsigned char> Render()
+  {
+    this->Renderer->ResetCameraClippingRange();
+    return scatterer_testing::RenderAndGrab(scatterer_testing::SharedWindow());
+  }
+};
+}
+
+TEST(BadInput, NonImageInputIsRefusedWithAMessage)
+{
+  Capture capture;
+  Stage stage;
+  vtkNew<vtkPolyData> poly;
+  stage.Mapper->SetInputData(poly);
+  stage.Render();
+  EXPECT_TRUE(capture.Has("vtkImageData")) << capture.Window->Text;
+}
+
+TEST(BadInput, EmptyImageRendersNothingWithoutCrashing)
+{
+  Capture capture;
+  Stage stage;
+  vtkNew<vtkImageData> empty;
+  stage.Mapper->SetInputData(empty);
+  const auto image = stage.Render();
+  EXPECT_FALSE(image.empty());
+  EXPECT_EQ(stage.Mapper->GetLastShaderFeatures().rfind("stock", 0) == 0 ||
+      stage.Mapper->GetLastShaderFeatures() == "stock: not rendered yet",
+    true)
+    << stage.Mapper->GetLastShaderFeatures();
+}
+
+TEST(BadInput, MissingScalarsRenderAsStock)
+{
+  Capture capture;
+  Stage stage;
+  vtkNew<vtkImageData> noScalars;
+  noScalars->SetDimensions(16, 16, 16);
+  stage.Mapper->SetInputData(noScalars);
+  stage.Render();
+  const std::string f = stage.Mapper->GetLastShaderFeatures();
+  EXPECT_TRUE(f.rfind("stock", 0) == 0) << f;
+}
+
+TEST(BadInput, LabelIdsWithoutAMaterialAreNamedInAWarning)
+{
+  Capture capture;
+  Stage stage;
+  auto labels = scatterer_testing::MakeShellBallPlate(32, VTK_UNSIGNED_CHAR);
+  stage.Mapper->SetInputData(labels);
+  // Materials for the shell (100) and the ball (200) only: the plate (150) has none.
+  stage.Mapper->AddLabelMaterial(100, 1.3, 1, 0.6, 0.5);
+  stage.Mapper->AddLabelMaterial(200, 1.5, 1, 1, 0.9);
+  stage.Property->SetInterpolationTypeToNearest();
+  stage.Render();
+  EXPECT_TRUE(capture.Has("belong to none of the requested materials")) << capture.Window->Text;
+  EXPECT_TRUE(capture.Has("scalar value 150")) << capture.Window->Text;
+  EXPECT_EQ(stage.Mapper->GetLastShaderFeatures().rfind("stock", 0), std::string::npos);
+}
+
+TEST(BadInput, AbsurdParametersAreClampedOrRejectedWithTheirName)
+{
+  Capture capture;
+  Stage stage;
+  stage.Mapper->SetInputData(scatterer_testing::MakeShellBallPlate(32, VTK_UNSIGNED_CHAR));
+  stage.Mapper->SetTemplateRadius(-5.0);
+  EXPECT_TRUE(capture.Has("SetTemplateRadius: -5 is outside")) << capture.Window->Text;
+  EXPECT_EQ(stage.Mapper->GetTemplateRadius(), 0.0);
+  stage.Mapper->SetTemplatesPerMaterial(0);
+  EXPECT_TRUE(capture.Has("SetTemplatesPerMaterial: 0 is outside")) << capture.Window->Text;
+  EXPECT_EQ(stage.Mapper->GetTemplatesPerMaterial(), 1);
+  stage.Mapper->SetOcclusionStrength(std::numeric_limits<double>::quiet_NaN());
+  EXPECT_TRUE(capture.Has("SetOcclusionStrength: NaN is not a valid value")) << capture.Window->Text;
+  EXPECT_EQ(stage.Mapper->GetOcclusionStrength(), 1.0);
+  stage.Mapper->AddScalarRangeMaterial(std::numeric_limits<double>::quiet_NaN(), 1, 1.4, 1, 1, 1);
+  EXPECT_TRUE(capture.Has("every argument must be finite")) << capture.Window->Text;
+  stage.Mapper->AddScalarRangeMaterial(200, 100, 1.4, 1, 1, 1);
+  EXPECT_TRUE(capture.Has("needs lo <= hi")) << capture.Window->Text;
+  stage.Mapper->AddScalarRangeMaterial(100, 200, -1.0, 1, 1, 1);
+  EXPECT_TRUE(capture.Has("refractive index > 0")) << capture.Window->Text;
+  EXPECT_EQ(stage.Mapper->GetNumberOfRequestedMaterials(), 0);
+  // After all that the mapper still illuminates, with the clamped values.
+  const auto image = stage.Render();
+  EXPECT_EQ(stage.Mapper->GetLastShaderFeatures().rfind("stock", 0), std::string::npos)
+    << stage.Mapper->GetLastShaderFeatures();
+  EXPECT_GT(scatterer_testing::MeanBrightness(image), 1.0);
+}
+
+TEST(BadInput, LabelTransferFunctionsGiveOneMaterialPerLabel)
+{
+  Stage stage;
+  vtkNew<vtkVolumeProperty> labelled;
+  for (int label : { 1, 2, 5 })
+  {
+    vtkNew<vtkColorTransferFunction> color;
+    color->AddRGBPoint(0, 0.2 * label, 0.5, 0.5);
+    labelled->SetLabelColor(label, color);
+    vtkNew<vtkPiecewiseFunction> opacity;
+    opacity->AddPoint(0, 0.5);
+    labelled->SetLabelScalarOpacity(label, opacity);
+  }
+  stage.Mapper->AddMaterialsFromLabelTransferFunctions(labelled);
+  EXPECT_EQ(stage.Mapper->GetNumberOfRequestedMaterials(), 3);
+  Capture capture;
+  vtkNew<vtkVolumeProperty> none;
+  stage.Mapper->AddMaterialsFromLabelTransferFunctions(none);
+  EXPECT_TRUE(capture.Has("no label transfer functions")) << capture.Window->Text;
+  EXPECT_EQ(stage.Mapper->GetNumberOfRequestedMaterials(), 3);
+}
