@@ -888,7 +888,7 @@ void vtkScattererTemplateVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ShaderPathSelection: "
      << (this->ShaderPathSelection == AUTOMATIC ? "Automatic" : "AsRequested") << "\n";
   os << indent << "TemplateRadius: " << this->TemplateRadius
-     << (this->TemplateRadius > 0 ? "" : " (automatic: 5 x mean spacing)") << "\n";
+     << (this->TemplateRadius > 0 ? "" : " (automatic: 10 x mean spacing)") << "\n";
   os << indent << "TemplatesPerMaterial: " << this->TemplatesPerMaterial << "\n";
   os << indent << "PhotonCap: " << this->PhotonCap << "\n";
   os << indent << "OcclusionStrength: " << this->OcclusionStrength << "\n";

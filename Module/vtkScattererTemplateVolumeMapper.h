@@ -170,7 +170,7 @@ public:
 
   ///@{
   /**
-   * Template radius in world units. 0 (default): 5 times the mean voxel
+   * Template radius in world units. 0 (default): 10 times the mean voxel
    * spacing. Larger radii see occluders farther away (softer, longer shadows).
    */
   vtkScattererSetClampMacro(TemplateRadius, double, 0.0, VTK_DOUBLE_MAX);

@@ -99,7 +99,7 @@ std::string RenderUsage()
          "  --templates N     templates per material, 1..64 (default 8)\n"
          "  --interval N      per-sample: ray samples between photon evaluations, 1..64\n"
          "                    (default 4)\n"
-         "  --radius R        template radius in world units, > 0 (default 5 x spacing)\n"
+         "  --radius R        template radius in world units, > 0 (default 10 x spacing)\n"
          "  --threshold T     photon-loop cut-off on transmittance x intensity, 0..1\n"
          "  --strength S      occlusion strength, 0..100 (default 1)\n"
          "  --long-range M    thin-part check distance in photon offsets, 1..64 (default 3)\n"
