@@ -7,6 +7,7 @@ packages=(
   build-essential cmake git                       # toolchain
   libvtk9-dev libglm-dev                          # VTK 9.1 (X11/GLX), GLM
   libgtest-dev libbenchmark-dev                   # GoogleTest, Google Benchmark
+  clang libclang-rt-14-dev                        # libFuzzer + sanitizer runtimes (scripts/fuzz.sh)
   xvfb xauth libgl1-mesa-dri                      # headless X + Mesa llvmpipe
   invesalius-examples                             # the real CT head (see docs/data.md)
 )
