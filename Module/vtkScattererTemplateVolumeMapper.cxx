@@ -458,7 +458,7 @@ void vtkScattererTemplateVolumeMapper::GPURender(vtkRenderer* ren, vtkVolume* vo
   in.ActiveMaterials = static_cast<int>(plan.Materials.Materials.size());
   if (plan.Materials.Materials.empty())
   {
-    renderStock("no material: the opacity transfer function is zero everywhere");
+    renderStock("no material: the opacity transfer function is below 1e-4 everywhere");
     return;
   }
   if (plan.Materials.Dropped > 0)

@@ -6,6 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake git                       # toolchain
   libvtk9-dev libglm-dev                          # VTK 9.1 (X11/GLX), GLM
+  python3-vtk9                                    # VTK's Python (wrapping, Python tests/example)
   libgtest-dev libbenchmark-dev                   # GoogleTest, Google Benchmark
   clang libclang-rt-14-dev                        # libFuzzer + sanitizer runtimes (scripts/fuzz.sh)
   xvfb xauth libgl1-mesa-dri                      # headless X + Mesa llvmpipe

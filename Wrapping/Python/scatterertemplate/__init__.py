@@ -1,0 +1,28 @@
+"""ScattererTemplate: scatterer-template global illumination for VTK volume rendering.
+
+    from scatterertemplate import vtkScattererTemplateVolumeMapper
+    mapper = vtkScattererTemplateVolumeMapper()   # instead of vtkOpenGLGPUVolumeRayCastMapper
+
+Classes: vtkScattererTemplateVolumeMapper, vtkScattererTemplateSource,
+vtkScattererMaterial, vtkScattererVolumeReader. Rendering needs VTK's OpenGL
+factories, so import ``vtkmodules.vtkRenderingOpenGL2`` and
+``vtkmodules.vtkRenderingVolumeOpenGL2`` (done here) before making a render window.
+"""
+
+# The OpenGL implementations of VTK's rendering classes (factory overrides).
+import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
+import vtkmodules.vtkRenderingVolumeOpenGL2  # noqa: F401
+
+from .ScattererTemplate import (  # noqa: F401
+    vtkScattererMaterial,
+    vtkScattererTemplateSource,
+    vtkScattererTemplateVolumeMapper,
+    vtkScattererVolumeReader,
+)
+
+__all__ = [
+    "vtkScattererMaterial",
+    "vtkScattererTemplateSource",
+    "vtkScattererTemplateVolumeMapper",
+    "vtkScattererVolumeReader",
+]
