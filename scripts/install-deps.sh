@@ -26,5 +26,5 @@ sudo=""
 echo "install-deps: installing ${missing[*]}"
 export DEBIAN_FRONTEND=noninteractive
 $sudo apt-get update -qq
-$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" > /tmp/scatterer-apt.log 2>&1 ||
+$sudo apt-get install -y -qq "${missing[@]}" > /tmp/scatterer-apt.log 2>&1 ||
   { tail -n 30 /tmp/scatterer-apt.log; exit 1; }
