@@ -1,0 +1,75 @@
+// VTK side of the reference renderer: turns a vtkImageData + vtkVolumeProperty +
+// vtkRenderer (camera, lights) into a scatterer_reference::Scene, and writes its
+// results (float .vti, PNG). Also builds the two scenes of the accuracy benchmark:
+// the CT head (shared/scenes/ct-head.json, via Examples/Common) and the synthetic hard
+// scene (a thin shell and a thin plate in front of a light, two materials).
+//
+// Conversion (docs/accuracy.md):
+// - scalars: component 0 of the point scalars, as float; origin and spacing as given
+//   (no direction matrix, no volume transform: identity assumed);
+// - table: `tableSize` entries over the scalar range; sigma_t = -ln(1 - alpha) / u with
+//   alpha the scalar opacity TF and u its ScalarOpacityUnitDistance; albedo = the colour
+//   TF's colour (times `albedoScale`);
+// - lights that are switched on: directional (scene, camera or headlight; toLight =
+//   position - focal point in world space) with irradiance intensity x diffuse colour;
+//   positional lights become point lights (VTK's default attenuation (1,0,0) means no
+//   distance falloff, which is kept; spot cones are ignored).
+// - camera: position, focal point, view up, view angle (perspective only).
+#ifndef ScattererReferenceScene_h
+#define ScattererReferenceScene_h
+
+#include "scatterer_reference/PathTracer.h"
+
+#include "vtkSmartPointer.h"
+
+#include <string>
+#include <vector>
+
+class vtkImageData;
+class vtkRenderer;
+class vtkVolumeProperty;
+
+namespace scatterer_reference_vtk
+{
+struct VtkScene
+{
+  std::string Name;
+  vtkSmartPointer<vtkImageData> Image;
+  vtkSmartPointer<vtkVolumeProperty> Property;
+  vtkSmartPointer<vtkRenderer> Renderer; // camera + lights (no window needed)
+  double SampleDistance = 0.5;            // the GPU mapper's sample distance for this scene
+};
+
+/** The CT head scene (the prepared volume, ct-head.json). False with @p error if missing. */
+bool MakeCtHeadScene(VtkScene& scene, std::string* error);
+
+/** The synthetic hard scene: 96^3, a thin shell (material A, red) behind a thin plate
+ * (material B, white) that shadows it from a directional light. */
+void MakeHardScene(VtkScene& scene);
+
+/** Applies the scene's camera and lights to another renderer (for the GPU mappers). */
+void ApplySceneView(const VtkScene& scene, vtkRenderer* renderer);
+
+scatterer_reference::Scene Convert(vtkImageData* image, vtkVolumeProperty* property, vtkRenderer* renderer,
+  int width, int height, int tableSize = 2048, double albedoScale = 1.0);
+
+/** Float RGB ("Radiance") + "StandardError" point data, width x height x 1. */
+vtkSmartPointer<vtkImageData> ToImageData(const scatterer_reference::RenderResult& result);
+
+/** clamp(exposure * rgb) to 8 bits, no gamma (as VTK's composite colours). */
+bool WritePng(const std::vector<float>& rgb, int width, int height, double exposure, const std::string& path);
+
+/** A grey-scale PNG of a one-channel map, scaled so @p maxValue is white. */
+bool WriteMapPng(const std::vector<float>& map, int width, int height, double maxValue, const std::string& path);
+
+/** Exposure that maps the 99.5th percentile of luminance to 1. */
+double AutoExposure(const std::vector<float>& rgb);
+
+/** The RGB of a vtkImageData with unsigned char or float scalars (3 or 4 comps), to [0,1] floats. */
+std::vector<float> ToFloatRgb(vtkImageData* image);
+
+/** Writes .vti (XML) or .mha (MetaImage) by extension. */
+bool WriteFloatImage(vtkImageData* image, const std::string& path);
+}
+
+#endif
