@@ -75,14 +75,10 @@ int main(int argc, char* argv[])
 
   const bool ctHead = options.Input.empty();
   const std::string input = ctHead ? scatterer_examples::CtHeadPath() : options.Input;
-  vtkSmartPointer<vtkImageData> image = vtkScattererVolumeReader::ReadVolume(input, &error);
+  vtkSmartPointer<vtkImageData> image = scatterer_examples::ReadVolumeOrCtHead(options.Input, error);
   if (!image)
   {
     std::cerr << "scatterer-render: " << error << "\n";
-    if (ctHead)
-    {
-      std::cerr << "The default CT head is prepared by: bash scripts/prepare-data.sh\n";
-    }
     return 1;
   }
 

@@ -505,18 +505,13 @@ int main(int argc, char* argv[])
   }
 
   const bool ctHead = options.Input.empty();
-  const std::string input = ctHead ? scatterer_examples::CtHeadPath() : options.Input;
-  vtkSmartPointer<vtkImageData> image = vtkScattererVolumeReader::ReadVolume(input, &error);
+  vtkSmartPointer<vtkImageData> image = scatterer_examples::ReadVolumeOrCtHead(options.Input, error);
   if (!image)
   {
     std::cerr << "scatterer-viewer: " << error << "\n";
-    if (ctHead)
+    if (ctHead && options.Test)
     {
-      std::cerr << "The default CT head is prepared by: bash scripts/prepare-data.sh\n";
-      if (options.Test)
-      {
-        return 77; // CTest: skipped
-      }
+      return 77; // CTest: skipped
     }
     return 1;
   }

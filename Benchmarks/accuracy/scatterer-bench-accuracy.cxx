@@ -436,20 +436,11 @@ int main(int argc, char* argv[])
   {
     scatterer_reference_vtk::VtkScene scene;
     std::string error;
-    if (sceneName == "ct-head")
+    int exitCode = 0;
+    if (!scatterer_reference_vtk::MakeNamedScene(sceneName, scene, error, exitCode))
     {
-      if (!scatterer_reference_vtk::MakeCtHeadScene(scene, &error))
-      {
-        std::cerr << error << "\nPrepare the CT head with: bash scripts/prepare-data.sh\n";
-        return 1;
-      }
-    }
-    else if (sceneName == "shell-plate")
-      scatterer_reference_vtk::MakeHardScene(scene);
-    else
-    {
-      std::cerr << "unknown scene " << sceneName << "\n";
-      return 2;
+      std::cerr << error << "\n";
+      return exitCode;
     }
 
     // The reference, cached on disk.

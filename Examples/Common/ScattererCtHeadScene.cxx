@@ -9,6 +9,7 @@
 #include "vtkPiecewiseFunction.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkScattererVolumeReader.h"
 #include "vtkVolumeProperty.h"
 
 #include <cstdlib>
@@ -32,6 +33,17 @@ std::string DataDirectory()
 std::string CtHeadPath()
 {
   return DataDirectory() + "/ct-head.mhd";
+}
+
+vtkSmartPointer<vtkImageData> ReadVolumeOrCtHead(const std::string& input, std::string& error)
+{
+  const std::string path = input.empty() ? CtHeadPath() : input;
+  auto image = vtkScattererVolumeReader::ReadVolume(path, &error);
+  if (!image && input.empty())
+  {
+    error += "\nThe default CT head is prepared by: bash scripts/prepare-data.sh";
+  }
+  return image;
 }
 
 void ApplyCtHeadProperty(vtkVolumeProperty* property)

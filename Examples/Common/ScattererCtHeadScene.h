@@ -5,6 +5,8 @@
 #ifndef ScattererCtHeadScene_h
 #define ScattererCtHeadScene_h
 
+#include "vtkSmartPointer.h"
+
 #include <string>
 
 class vtkGPUVolumeRayCastMapper;
@@ -20,6 +22,12 @@ std::string DataDirectory();
 
 /** The prepared CT head (scripts/prepare-data.sh writes it). */
 std::string CtHeadPath();
+
+/**
+ * Reads @p input, or the prepared CT head when @p input is empty. On failure
+ * returns nullptr with @p error saying why (for the CT head, how to prepare it).
+ */
+vtkSmartPointer<vtkImageData> ReadVolumeOrCtHead(const std::string& input, std::string& error);
 
 /** Transfer functions and material (ambient/diffuse/specular) of the scene; shading off. */
 void ApplyCtHeadProperty(vtkVolumeProperty* property);

@@ -300,4 +300,26 @@ bool WriteFloatImage(vtkImageData* image, const std::string& path)
   w->SetFileName(path.c_str());
   return w->Write() == 1;
 }
+
+bool MakeNamedScene(const std::string& name, VtkScene& scene, std::string& error, int& exitCode)
+{
+  if (name == "ct-head")
+  {
+    if (!MakeCtHeadScene(scene, &error))
+    {
+      error += "\nPrepare the CT head with: bash scripts/prepare-data.sh";
+      exitCode = 1;
+      return false;
+    }
+    return true;
+  }
+  if (name == "shell-plate")
+  {
+    MakeHardScene(scene);
+    return true;
+  }
+  error = "unknown scene '" + name + "' (ct-head or shell-plate)";
+  exitCode = 2;
+  return false;
+}
 }

@@ -47,6 +47,13 @@ bool MakeCtHeadScene(VtkScene& scene, std::string* error);
  * (material B, white) that shadows it from a directional light. */
 void MakeHardScene(VtkScene& scene);
 
+/**
+ * "ct-head" or "shell-plate": fills @p scene. On failure returns false with
+ * @p error saying why (a missing CT head names scripts/prepare-data.sh) and
+ * @p exitCode 1 (missing data) or 2 (unknown name).
+ */
+bool MakeNamedScene(const std::string& name, VtkScene& scene, std::string& error, int& exitCode);
+
 /** Applies the scene's camera and lights to another renderer (for the GPU mappers). */
 void ApplySceneView(const VtkScene& scene, vtkRenderer* renderer);
 

@@ -115,20 +115,14 @@ int main(int argc, char* argv[])
       scene.Renderer->CreateLight(); // the headlight
     }
   }
-  else if (sceneName == "ct-head")
-  {
-    if (!scatterer_reference_vtk::MakeCtHeadScene(scene, &error))
-    {
-      std::cerr << error << "\nPrepare the CT head with: bash scripts/prepare-data.sh\n";
-      return 1;
-    }
-  }
-  else if (sceneName == "shell-plate")
-    scatterer_reference_vtk::MakeHardScene(scene);
   else
   {
-    std::cerr << "unknown --scene " << sceneName << "\n";
-    return 2;
+    int exitCode = 0;
+    if (!scatterer_reference_vtk::MakeNamedScene(sceneName, scene, error, exitCode))
+    {
+      std::cerr << error << "\n";
+      return exitCode;
+    }
   }
 
   scatterer_reference::PathTracer tracer(
