@@ -553,7 +553,6 @@ void vtkScattererTemplateVolumeMapper::GPURender(vtkRenderer* ren, vtkVolume* vo
   auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
   std::vector<scatterer_shader::Sampler> samplers;
   std::vector<vtkTextureObject*> bound;
-  std::vector<std::string> samplerNames;
   float unlit[3] = { 1, 1, 1 };
   in.LastCacheMs = 0.0;
   if (f.Cached)
