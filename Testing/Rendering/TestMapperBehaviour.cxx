@@ -7,6 +7,7 @@
 #include "ScattererShaderInstaller.h"
 #include "ScattererTestVolumes.h"
 
+#include "vtkActor.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
@@ -16,6 +17,10 @@
 #include "vtkOpenGLGPUVolumeRayCastMapper.h"
 #include "vtkOpenGLShaderProperty.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkPlane.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkSphereSource.h"
 #include "vtkPointData.h"
 #include "vtkRenderWindow.h"
 #include "vtkRendererCollection.h"
@@ -342,4 +347,57 @@ TEST(MapperBehaviour, SeveralVolumesAndRenderersRender)
   EXPECT_EQ(left.Mapper->GetLastShaderFeatures().rfind("stock", 0), std::string::npos);
   EXPECT_EQ(right.Mapper->GetLastShaderFeatures().rfind("stock", 0), std::string::npos);
   EXPECT_GT(MeanBrightness(image), 5.0);
+}
+
+// Illumination changes colours, never what is drawn where: with cropping, a
+// clipping plane and opaque geometry cutting the volume, the pixels covered
+// by the volume (and hidden by the geometry) are the stock mapper's.
+TEST(MapperBehaviour, CroppingClippingAndOpaqueGeometryCoverTheSamePixelsAsStock)
+{
+  Scene scene(true);
+  vtkNew<vtkPlane> plane;
+  plane->SetOrigin(0.5 * N, 0.5 * N, 0.5 * N);
+  plane->SetNormal(-1.0, 0.3, 0.2);
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetCenter(0.7 * N, 0.5 * N, 0.5 * N);
+  sphere->SetRadius(0.25 * N);
+  vtkNew<vtkPolyDataMapper> sphereMapper;
+  sphereMapper->SetInputConnection(sphere->GetOutputPort());
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(sphereMapper);
+  actor->GetProperty()->SetColor(0.2, 0.8, 0.3);
+  scene.Renderer->AddActor(actor);
+  scene.Renderer->SetBackground(0.1, 0.1, 0.2);
+  for (auto* m : { static_cast<vtkGPUVolumeRayCastMapper*>(scene.Mapper),
+         static_cast<vtkGPUVolumeRayCastMapper*>(scene.Stock) })
+  {
+    m->AddClippingPlane(plane);
+    m->CroppingOn();
+    m->SetCroppingRegionPlanes(0, 0.8 * N, 0, N, 0, 0.7 * N);
+    m->SetCroppingRegionFlagsToSubVolume();
+  }
+  const auto ours = scene.Render();
+  ASSERT_EQ(scene.Mapper->GetLastShaderFeatures().rfind("stock", 0), std::string::npos)
+    << scene.Mapper->GetLastShaderFeatures();
+  const auto stock = scene.RenderStock();
+  const unsigned char bg[3] = { 26, 26, 51 };
+  auto covered = [&](const std::vector<unsigned char>& img, size_t i) {
+    return std::abs(img[i] - bg[0]) + std::abs(img[i + 1] - bg[1]) + std::abs(img[i + 2] - bg[2]) > 6;
+  };
+  size_t differ = 0, coveredCount = 0, geometrySame = 0, geometry = 0;
+  for (size_t i = 0; i < stock.size(); i += 4)
+  {
+    coveredCount += covered(stock, i) ? 1 : 0;
+    differ += covered(stock, i) != covered(ours, i) ? 1 : 0;
+    // Opaque green sphere pixels in front of the volume are untouched.
+    if (stock[i + 1] > 150 && stock[i] < 90 && stock[i + 2] < 110)
+    {
+      ++geometry;
+      geometrySame += (stock[i] == ours[i] && stock[i + 1] == ours[i + 1] && stock[i + 2] == ours[i + 2]) ? 1 : 0;
+    }
+  }
+  EXPECT_GT(coveredCount, stock.size() / 4 / 20) << "the scene shows nothing";
+  EXPECT_LT(differ, stock.size() / 4 / 200) << differ << " pixels covered differently from stock";
+  EXPECT_GT(geometry, 100u) << "the sphere is not visible";
+  EXPECT_EQ(geometrySame, geometry) << "pixels of the opaque sphere changed";
 }
