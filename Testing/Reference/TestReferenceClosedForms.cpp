@@ -120,6 +120,32 @@ TEST(ReferenceClosedForms, AbsorptionSlabInFrontOfABackgroundLight)
   EXPECT_NEAR(r.rmsStandardError, std::sqrt(p * (1 - p) / 512.0), 0.15 * std::sqrt(p * (1 - p) / 512.0));
 }
 
+TEST(ReferenceClosedForms, EmissionAbsorptionSlab)
+{
+  // Albedo 0, emitted radiance Le, no background: looking straight through a
+  // slab of optical depth tau shows Le (1 - exp(-tau)).
+  const double sigma = 0.6, d = 2.0, Le = 2.0;
+  Scene s = slab(9, d, sigma, glm::vec3(0.0f), 50.0);
+  s.volume.table.emission = { glm::vec3(static_cast<float>(Le)) };
+  s.camera.position = { 0, 0, 100 };
+  s.camera.focalPoint = { 0, 0, 0 };
+  s.camera.viewUp = { 0, 1, 0 };
+  s.camera.viewAngleDeg = 1.0;
+  s.camera.width = s.camera.height = 8;
+  PathTracer tracer(s);
+  RenderSettings rs;
+  rs.samplesPerPixel = 512;
+  rs.threads = 2;
+  const RenderResult r = tracer.render(rs);
+  double mean = 0.0;
+  for (size_t p = 0; p < 64; ++p)
+    mean += r.rgb[3 * p] / 64.0;
+  const double exact = Le * (1.0 - std::exp(-sigma * d));
+  const double se = r.rmsStandardError / std::sqrt(64.0);
+  EXPECT_GT(se, 0.0);
+  EXPECT_NEAR(mean, exact, 4.0 * se) << "se " << se;
+}
+
 namespace {
 // Exact single scattering reflected by a homogeneous slab (Chandrasekhar; van de Hulst's
 // first-order reflection): L = a E p mu0 / (mu + mu0) (1 - exp(-tau (1/mu + 1/mu0))).

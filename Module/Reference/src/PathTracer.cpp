@@ -99,7 +99,8 @@ PathTracer::PathTracer(Scene scene, int macroCell)
       }
 }
 
-void PathTracer::lookup(const glm::dvec3& p, float& sigma, glm::vec3* albedo) const
+void PathTracer::lookup(const glm::dvec3& p, float& sigma, glm::vec3* albedo,
+  glm::vec3* emission) const
 {
   const Volume& v = scene_.volume;
   const glm::dvec3 g = (p - v.origin) / v.spacing;
@@ -109,6 +110,8 @@ void PathTracer::lookup(const glm::dvec3& p, float& sigma, glm::vec3* albedo) co
     sigma = 0.0f;
     if (albedo)
       *albedo = glm::vec3(0.0f);
+    if (emission)
+      *emission = glm::vec3(0.0f);
     return;
   }
   const int i = std::min(static_cast<int>(g.x), v.dims.x - 2);
@@ -130,6 +133,8 @@ void PathTracer::lookup(const glm::dvec3& p, float& sigma, glm::vec3* albedo) co
     sigma = tt.sigmaT[0];
     if (albedo)
       *albedo = tt.albedo[0];
+    if (emission)
+      *emission = tt.emission.empty() ? glm::vec3(0.0f) : tt.emission[0];
     return;
   }
   const double span = tt.scalarMax > tt.scalarMin ? tt.scalarMax - tt.scalarMin : 1.0;
@@ -139,6 +144,10 @@ void PathTracer::lookup(const glm::dvec3& p, float& sigma, glm::vec3* albedo) co
   sigma = tt.sigmaT[e0] + f * (tt.sigmaT[e0 + 1] - tt.sigmaT[e0]);
   if (albedo)
     *albedo = tt.albedo[e0] + f * (tt.albedo[e0 + 1] - tt.albedo[e0]);
+  if (emission)
+    *emission = tt.emission.size() != static_cast<size_t>(n)
+      ? glm::vec3(0.0f)
+      : tt.emission[e0] + f * (tt.emission[e0 + 1] - tt.emission[e0]);
 }
 
 double PathTracer::sigmaT(const glm::dvec3& p) const
@@ -306,6 +315,14 @@ glm::dvec3 PathTracer::radiance(const glm::dvec3& origin, const glm::dvec3& dir,
     if (order >= settings.maxScatteringOrder)
       break;
     const glm::dvec3 p = o + tHit * d;
+    if (!scene_.volume.table.emission.empty())
+    {
+      // Collision estimator of the emission integral: sigma_a / sigma_t * Le.
+      float sigma;
+      glm::vec3 alb, emitted;
+      lookup(p, sigma, &alb, &emitted);
+      L += beta * glm::dvec3(glm::vec3(1.0f) - albedo) * glm::dvec3(emitted);
+    }
     beta *= glm::dvec3(albedo);
     // Next-event estimation to the delta lights.
     for (const DirectionalLight& l : scene_.directionalLights)

@@ -69,6 +69,11 @@ struct TransferTable {
   double scalarMin = 0.0, scalarMax = 1.0; // entries span [min, max] uniformly, clamped outside
   std::vector<float> sigmaT;               // per world unit
   std::vector<glm::vec3> albedo;           // single-scattering albedo per channel, in [0, 1]
+  // Optional emitted radiance Le per channel (empty: no emission). The source
+  // term is sigma_a * Le with sigma_a = sigma_t * (1 - albedo); collected at every
+  // real collision as (1 - albedo) * Le (the collision estimator). VTK's transfer
+  // functions have no emission; this serves the emission-absorption closed form.
+  std::vector<glm::vec3> emission;
 };
 
 struct Volume {
@@ -154,7 +159,8 @@ private:
   bool deltaTrack(const glm::dvec3& o, const glm::dvec3& d, double t0, double t1, Pcg32& rng,
     double& tHit, glm::vec3* albedo) const;
   double ratioTrack(const glm::dvec3& o, const glm::dvec3& d, double t0, double t1, Pcg32& rng) const;
-  void lookup(const glm::dvec3& p, float& sigma, glm::vec3* albedo) const;
+  void lookup(const glm::dvec3& p, float& sigma, glm::vec3* albedo,
+    glm::vec3* emission = nullptr) const;
 
   Scene scene_;
   int macro_ = 8;
