@@ -3,6 +3,7 @@
 // Default: the real CT head benchmark scene (shared/scenes/ct-head.json) at
 // 512x512. Run with --help for the options.
 #include "Common/ScattererCtHeadScene.h"
+#include "Common/ScattererScreenshot.h"
 #include "Common/ScattererMapperSetup.h"
 #include "Common/ScattererRenderOptions.h"
 
@@ -131,15 +132,7 @@ int main(int argc, char* argv[])
   }
   const FrameStats stats = Summarize(frameMs);
 
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->ReadFrontBufferOff();
-  grab->Update();
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetFileName(options.Output.c_str());
-  writer->SetInputConnection(grab->GetOutputPort());
-  writer->Write();
-  if (writer->GetErrorCode() != 0)
+  if (!scatterer_examples::WriteWindowPng(window, options.Output))
   {
     std::cerr << "scatterer-render: cannot write '" << options.Output << "'.\n";
     return 1;

@@ -19,6 +19,7 @@
 // open; --test is --play-events - --size 300x300 --output scatterer-viewer-test.png and
 // also checks that the PNG is not blank and that illumination was on in every frame.
 #include "Common/ScattererCtHeadScene.h"
+#include "Common/ScattererScreenshot.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
@@ -636,15 +637,7 @@ int main(int argc, char* argv[])
     return 0;
   }
 
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->ReadFrontBufferOff();
-  grab->Update();
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetFileName(options.Output.c_str());
-  writer->SetInputConnection(grab->GetOutputPort());
-  writer->Write();
-  if (writer->GetErrorCode() != 0)
+  if (!scatterer_examples::WriteWindowPng(window, options.Output))
   {
     std::cerr << "scatterer-viewer: cannot write '" << options.Output << "'.\n";
     return 1;

@@ -6,6 +6,7 @@
 //   scatterer-bench-render [--frames N] [--size WxH] [--out DIR]
 #include "Common/ScattererCtHeadScene.h"
 #include "Common/ScattererMapperSetup.h"
+#include "Common/ScattererScreenshot.h"
 
 #include "vtkCamera.h"
 #include "vtkImageData.h"
@@ -172,13 +173,7 @@ int main(int argc, char* argv[])
     csv.flush();
     std::printf("%-40s median %8.1f ms  x%.2f  cache %6.1f ms  (%s)\n", config.Name.c_str(), median,
       stockMedian > 0 ? median / stockMedian : 0.0, Median(cacheMs), shader.c_str());
-    vtkNew<vtkWindowToImageFilter> grab;
-    grab->SetInput(window);
-    grab->ReadFrontBufferOff();
-    vtkNew<vtkPNGWriter> writer;
-    writer->SetInputConnection(grab->GetOutputPort());
-    writer->SetFileName((out + "/" + config.Name + ".png").c_str());
-    writer->Write();
+    scatterer_examples::WriteWindowPng(window, out + "/" + config.Name + ".png");
   }
   std::printf("wrote %s/render.csv\n", out.c_str());
   return 0;

@@ -41,6 +41,21 @@ Scene slab(int nz, double thickness, double sigma, glm::vec3 albedo, double half
   v.table.albedo = { albedo };
   return s;
 }
+
+// Renders an 8x8 image straight down through the slab at 512 samples per pixel.
+RenderResult renderThroughSlab(Scene s)
+{
+  s.camera.position = { 0, 0, 100 };
+  s.camera.focalPoint = { 0, 0, 0 };
+  s.camera.viewUp = { 0, 1, 0 };
+  s.camera.viewAngleDeg = 1.0;
+  s.camera.width = s.camera.height = 8;
+  PathTracer tracer(s);
+  RenderSettings rs;
+  rs.samplesPerPixel = 512;
+  rs.threads = 2;
+  return tracer.render(rs);
+}
 }
 
 TEST(ReferenceClosedForms, SigmaFromOpacityMatchesVtkOpacityCorrection)
@@ -99,16 +114,7 @@ TEST(ReferenceClosedForms, AbsorptionSlabInFrontOfABackgroundLight)
   const double sigma = 0.5, d = 2.0;
   Scene s = slab(9, d, sigma, glm::vec3(0.0f), 50.0);
   s.environment = glm::dvec3(1.0);
-  s.camera.position = { 0, 0, 100 };
-  s.camera.focalPoint = { 0, 0, 0 };
-  s.camera.viewUp = { 0, 1, 0 };
-  s.camera.viewAngleDeg = 1.0;
-  s.camera.width = s.camera.height = 8;
-  PathTracer tracer(s);
-  RenderSettings rs;
-  rs.samplesPerPixel = 512;
-  rs.threads = 2;
-  const RenderResult r = tracer.render(rs);
+  const RenderResult r = renderThroughSlab(s);
   double mean = 0.0;
   for (size_t p = 0; p < 64; ++p)
     mean += r.rgb[3 * p + 1] / 64.0;
@@ -127,16 +133,7 @@ TEST(ReferenceClosedForms, EmissionAbsorptionSlab)
   const double sigma = 0.6, d = 2.0, Le = 2.0;
   Scene s = slab(9, d, sigma, glm::vec3(0.0f), 50.0);
   s.volume.table.emission = { glm::vec3(static_cast<float>(Le)) };
-  s.camera.position = { 0, 0, 100 };
-  s.camera.focalPoint = { 0, 0, 0 };
-  s.camera.viewUp = { 0, 1, 0 };
-  s.camera.viewAngleDeg = 1.0;
-  s.camera.width = s.camera.height = 8;
-  PathTracer tracer(s);
-  RenderSettings rs;
-  rs.samplesPerPixel = 512;
-  rs.threads = 2;
-  const RenderResult r = tracer.render(rs);
+  const RenderResult r = renderThroughSlab(s);
   double mean = 0.0;
   for (size_t p = 0; p < 64; ++p)
     mean += r.rgb[3 * p] / 64.0;
