@@ -147,6 +147,9 @@ void SetIlluminationUniforms(vtkVolume* volume, const UniformValues& v)
   u->SetUniform3f("st_toTexX", v.ToTex[0]);
   u->SetUniform3f("st_toTexY", v.ToTex[1]);
   u->SetUniform3f("st_toTexZ", v.ToTex[2]);
+  u->SetUniform3f("st_cacheTexScale", v.CacheTexScale);
+  u->SetUniform3f("st_cacheTexOffset", v.CacheTexOffset);
+  u->SetUniform3f("st_indexOrigin", v.IndexOrigin);
   const scatterer_scene::LightSet& lights = *v.Lights;
   const int nl = lights.Count();
   Set3(u, "st_lightDir", lights.Direction.data(), nl);

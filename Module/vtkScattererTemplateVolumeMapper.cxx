@@ -133,6 +133,10 @@ struct vtkScattererTemplateVolumeMapper::vtkInternals
   vtkSmartPointer<vtkTextureObject> BleedCache;
   double LastCacheMs = 0.0;
   float Unlit[3] = { 1, 1, 1 };
+  // Volume texture coordinates -> cache texture coordinates (the cache lattice is
+  // anchored to extent index 0, so pieces of a split volume share it).
+  float CacheTexScale[3] = { 1, 1, 1 };
+  float CacheTexOffset[3] = { 0, 0, 0 };
 
   bool UpdateCache(vtkScattererTemplateVolumeMapper* self, vtkRenderer* ren, vtkVolume* vol,
     vtkImageData* image, vtkDataArray* scalars, int cellFlag, const double range[2],
@@ -289,6 +293,25 @@ size_t vtkScattererTemplateVolumeMapper::GetTemplateTextureBytes() const
 double vtkScattererTemplateVolumeMapper::GetLastCacheUpdateMilliseconds() const
 {
   return this->Internals->LastCacheMs;
+}
+
+double vtkScattererTemplateVolumeMapper::GetIlluminationReach(const double spacing[3]) const
+{
+  if (!this->IlluminationEnabled)
+  {
+    return 0.0;
+  }
+  const double sx = std::abs(spacing[0]), sy = std::abs(spacing[1]), sz = std::abs(spacing[2]);
+  const double radius = this->TemplateRadius > 0.0 ? this->TemplateRadius : 10.0 * (sx + sy + sz) / 3.0;
+  // Photons lie within one radius; the thin-part check marches on toward the light
+  // to LongRangeMultiple x the photon's offset (Physics/.../Illumination.h).
+  const bool thin = this->ShadowsEnabled && this->ThinPartCheckEnabled;
+  const double photonReach = thin ? radius * this->LongRangeMultiple : radius;
+  // A cache voxel averages CacheScale voxels and is interpolated by its neighbours.
+  const double cacheMargin =
+    this->IlluminationMode == CACHED ? this->CacheScale * std::max({ sx, sy, sz }) : 0.0;
+  const double reach = photonReach + cacheMargin;
+  return std::isfinite(reach) ? reach : 0.0;
 }
 
 void vtkScattererTemplateVolumeMapper::SetExtraShaderCodeForTesting(const std::string& glsl)
@@ -602,9 +625,14 @@ void vtkScattererTemplateVolumeMapper::GPURender(vtkRenderer* ren, vtkVolume* vo
   u.OcclusionScale = static_cast<float>(this->OcclusionStrength * plan.Radius);
   u.LongRange = static_cast<float>(this->LongRangeMultiple);
   u.Interval = this->IlluminationInterval;
+  int extent[6];
+  image->GetExtent(extent);
   for (int c = 0; c < 3; ++c)
   {
     u.Unlit[c] = unlit[c];
+    u.CacheTexScale[c] = in.CacheTexScale[c];
+    u.CacheTexOffset[c] = in.CacheTexOffset[c];
+    u.IndexOrigin[c] = static_cast<float>(extent[2 * c]);
   }
   for (int a = 0; a < 3; ++a)
   {
@@ -631,7 +659,8 @@ void vtkScattererTemplateVolumeMapper::GPURender(vtkRenderer* ren, vtkVolume* vo
       "st_photonThreshold", "st_occlusionScale", "st_longRange", "st_interval", "st_unlit",
       "st_toTexX", "st_toTexY", "st_toTexZ", "st_lightDir", "st_lightPos", "st_lightColor",
       "st_lightPositional", "st_ambient", "st_unlitNorm", "st_matRange", "st_matColor",
-      "st_speedRatio", "st_opacityRatio" };
+      "st_speedRatio", "st_opacityRatio", "st_cacheTexScale", "st_cacheTexOffset",
+      "st_indexOrigin" }; // every name SetIlluminationUniforms sets
     for (const auto& sampler : samplers)
     {
       keep.push_back(sampler.Name);
@@ -749,9 +778,26 @@ bool vtkScattererTemplateVolumeMapper::vtkInternals::UpdateCache(
   // The illumination grid: also lights, geometry and quality settings.
   scatterer::IlluminationSettings s;
   const int scale = self->CacheScale;
+  // Cache voxel G of the lattice covers extent indices [G * scale, (G + 1) * scale):
+  // anchored to index 0 rather than to this image's first voxel, so that a piece of a
+  // split volume (ParaView with MPI) places and hashes its cache voxels as the whole
+  // volume does, and pieces with enough ghost layers match a single-process render.
+  int extent[6];
+  image->GetExtent(extent);
+  auto floorDiv = [](int a, int b) { return a >= 0 ? a / b : -((-a + b - 1) / b); };
   for (int a = 0; a < 3; ++a)
   {
-    s.cacheDims[a] = std::max(1, (dims[a] + scale - 1) / scale);
+    const int origin = extent[2 * a];
+    const int first = floorDiv(origin, scale);
+    const int last = floorDiv(origin + dims[a] - 1, scale);
+    s.cacheDims[a] = std::max(1, last - first + 1);
+    s.cacheStep[a] = static_cast<float>(scale);
+    s.cacheFirstCentre[a] = (first + 0.5f) * scale - 0.5f - origin;
+    s.cacheIndexOrigin[a] = first;
+    // texel centre (i + 0.5) / dims of the volume <-> cache voxel (x - first centre) / scale
+    const float span = static_cast<float>(scale) * s.cacheDims[a];
+    this->CacheTexScale[a] = static_cast<float>(dims[a]) / span;
+    this->CacheTexOffset[a] = (0.5f * scale - 0.5f - s.cacheFirstCentre[a]) / span;
   }
   double spacing[3], origin[3];
   image->GetSpacing(spacing);
@@ -804,7 +850,8 @@ bool vtkScattererTemplateVolumeMapper::vtkInternals::UpdateCache(
   }
   std::ostringstream gridKey;
   gridKey.precision(9);
-  gridKey << this->FieldKey << '#' << this->TemplateKey << '#' << scale << '|' << s.radius << '|'
+  gridKey << this->FieldKey << '#' << this->TemplateKey << '#' << scale << '|' << extent[0] << ','
+          << extent[2] << ',' << extent[4] << '|' << s.radius << '|'
           << s.occlusionStrength << '|' << s.longRange << '|' << s.photonThreshold << '|'
           << s.photonCap << '|' << s.templatesPerEstimate << s.shadow << s.thin << s.bleed
           << s.boundary << s.packInOne << '|' << s.ambient.x << ',' << s.ambient.y << ',' << s.ambient.z;

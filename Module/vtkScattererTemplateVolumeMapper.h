@@ -150,6 +150,17 @@ public:
   /** Cached mode: milliseconds the last cache update took (0 if none was needed). */
   double GetLastCacheUpdateMilliseconds() const;
 
+  /**
+   * How far, in the volume's data units, the illumination of a sample reads the
+   * volume: the template radius (TemplateRadius, or 10 x the mean of `spacing`
+   * when that is 0) times LongRangeMultiple when the thin-part check is on, plus
+   * one cache voxel (CacheScale x the largest spacing) in cached mode. A piece of a
+   * distributed volume with ghost layers at least this wide is lit exactly as the
+   * same voxels of the whole volume (the ParaView plugin requests them).
+   * Assumes an unscaled volume matrix.
+   */
+  double GetIlluminationReach(const double spacing[3]) const;
+
   enum ShaderPathSelectionType
   {
     AUTOMATIC = 0, ///< only the code paths the scene needs (default)

@@ -27,7 +27,9 @@ int st_material(float s)
 // noise of individual templates becomes a fine, stable grain.
 int st_templateIndex(vec3 texPos, int salt)
 {
-  uvec3 v = uvec3(ivec3(texPos * vec3(textureSize(in_volume[0], 0)))) + uvec3(salt);
+  // Voxel index in the whole volume (st_indexOrigin: the image's first extent
+  // index), so pieces of a split volume pick templates as the whole volume does.
+  uvec3 v = uvec3(ivec3(texPos * vec3(textureSize(in_volume[0], 0)) + st_indexOrigin)) + uvec3(salt);
   uint h = v.x * 73856093u ^ v.y * 19349663u ^ v.z * 83492791u;
   h ^= h >> 13u;
   h *= 0x5bd1e995u;

@@ -22,7 +22,7 @@
 //ST::IF ONETEXTURE
         // The photon test ran on the CPU at the cache voxels; read it here
         // (a = visibility, rgb = colour bled from other materials).
-        vec4 st_cache = texture3D(st_lightCache, g_dataPos);
+        vec4 st_cache = texture3D(st_lightCache, g_dataPos * st_cacheTexScale + st_cacheTexOffset);
         st_F = st_cache.a * st_unlit;
 //ST::IF BLEED
         st_B = st_cache.rgb * st_unlit;
@@ -30,9 +30,10 @@
 //ST::ENDIF
 //ST::IF TWOTEXTURES
         // The photon test ran on the CPU at the cache voxels; read it here.
-        st_F = texture3D(st_lightCache, g_dataPos).rgb * st_unlit;
+        vec3 st_cachePos = g_dataPos * st_cacheTexScale + st_cacheTexOffset;
+        st_F = texture3D(st_lightCache, st_cachePos).rgb * st_unlit;
 //ST::IF BLEED
-        st_B = texture3D(st_bleedCache, g_dataPos).rgb * st_unlit;
+        st_B = texture3D(st_bleedCache, st_cachePos).rgb * st_unlit;
 //ST::ENDIF
 //ST::ENDIF
 //ST::IF PERSAMPLE

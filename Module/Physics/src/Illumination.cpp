@@ -98,6 +98,14 @@ void validate(const OcclusionField& field, const std::vector<std::vector<Templat
         std::to_string(s.cacheDims[a]) + " on axis " + std::to_string(a));
     }
   }
+  const bool lattice = s.cacheStep.x != 0.0f || s.cacheStep.y != 0.0f || s.cacheStep.z != 0.0f;
+  for (int a = 0; lattice && a < 3; ++a) {
+    if (!(s.cacheStep[a] > 0.0f) || !std::isfinite(s.cacheStep[a]) ||
+      !std::isfinite(s.cacheFirstCentre[a])) {
+      throw std::invalid_argument("computeIllumination: cacheStep must be positive and finite on "
+        "every axis (or 0 on all), and cacheFirstCentre finite");
+    }
+  }
   const size_t m = templates.size();
   if (m == 0 || m > 127 || s.materialColors.size() != m || s.speedRatios.size() != m * m ||
     s.opacityRatios.size() != m * m) {
@@ -224,11 +232,14 @@ IlluminationGrid computeIllumination(const OcclusionField& field,
   // models, not occluders: shadow rays start outside the cell's own extent
   // (one voxel at full resolution). Without this, a cell centred inside a
   // thin plate would shadow the plate's own lit face.
-  const float ownNeighbourhood = 0.5f + 0.5f * std::max({1.0f, static_cast<float>(field.dims[0]) / s.cacheDims[0],
-    static_cast<float>(field.dims[1]) / s.cacheDims[1], static_cast<float>(field.dims[2]) / s.cacheDims[2]});
+  const bool lattice = s.cacheStep.x > 0.0f;
+  float step[3], firstCentre[3];
+  for (int a = 0; a < 3; ++a) {
+    step[a] = lattice ? s.cacheStep[a] : static_cast<float>(field.dims[a]) / grid.dims[a];
+    firstCentre[a] = lattice ? s.cacheFirstCentre[a] : 0.5f * step[a] - 0.5f;
+  }
+  const float ownNeighbourhood = 0.5f + 0.5f * std::max({1.0f, step[0], step[1], step[2]});
   const Lookup lookup{field};
-  const float step[3] = {static_cast<float>(field.dims[0]) / grid.dims[0],
-    static_cast<float>(field.dims[1]) / grid.dims[1], static_cast<float>(field.dims[2]) / grid.dims[2]};
 
   std::vector<std::uint8_t> computed(cells, 0);
   std::atomic<int> nextSlice{0};
@@ -240,8 +251,8 @@ IlluminationGrid computeIllumination(const OcclusionField& field,
     for (int k = nextSlice++; k < grid.dims[2]; k = nextSlice++) {
       for (int j = 0; j < grid.dims[1]; ++j) {
         for (int i = 0; i < grid.dims[0]; ++i) {
-          const glm::vec3 x((i + 0.5f) * step[0] - 0.5f, (j + 0.5f) * step[1] - 0.5f,
-            (k + 0.5f) * step[2] - 0.5f);
+          const glm::vec3 x(firstCentre[0] + i * step[0], firstCentre[1] + j * step[1],
+            firstCentre[2] + k * step[2]);
           float sigma;
           int m;
           lookup.at(x, sigma, m);
@@ -262,7 +273,8 @@ IlluminationGrid computeIllumination(const OcclusionField& field,
           const auto& materialTemplates = templates[m];
           const int count = static_cast<int>(materialTemplates.size());
           // Distinct templates, starting at the hashed one (decorrelated per voxel).
-          const int first = templateIndex(i, j, k, 0, count);
+          const int first = templateIndex(s.cacheIndexOrigin[0] + i, s.cacheIndexOrigin[1] + j,
+            s.cacheIndexOrigin[2] + k, 0, count);
           const int estimates = std::min(s.templatesPerEstimate, count);
           for (int e = 0; e < estimates; ++e) {
             const Template& t = materialTemplates[(first + e) % count];

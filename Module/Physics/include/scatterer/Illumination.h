@@ -46,7 +46,16 @@ struct GridLight {
 
 struct IlluminationSettings {
   int cacheDims[3] = {0, 0, 0};  // the grid evaluated; cache voxel i sits at index
-                                 // (i + 0.5) * dims / cacheDims - 0.5 of the field
+                                 // (i + 0.5) * dims / cacheDims - 0.5 of the field,
+                                 // unless cacheStep is set:
+  // For a piece of a larger volume (distributed rendering): cache voxel i sits at
+  // field index cacheFirstCentre + i * cacheStep, on a lattice anchored to the whole
+  // volume, and cacheIndexOrigin is the lattice index of cache voxel 0, so a piece
+  // places and hashes its cache voxels exactly as the whole volume does.
+  // cacheStep 0 (default): the cache spans the field (the rule above).
+  glm::vec3 cacheStep{0.0f};
+  glm::vec3 cacheFirstCentre{0.0f};
+  int cacheIndexOrigin[3] = {0, 0, 0};
   glm::mat3 indexToWorld{1.0f};  // linear part: index offset -> world offset
   glm::vec3 worldOrigin{0.0f};   // world position of index (0, 0, 0)
   float radius = 1.0f;           // template radius, world length

@@ -1,0 +1,194 @@
+#include "vtkScattererVolumeRepresentation.h"
+
+#include "vtkCellData.h"
+#include "vtkDataObject.h"
+#include "vtkDataSetAttributes.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkScattererTemplateVolumeMapper.h"
+#include "vtkSmartPointer.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+
+#include <algorithm>
+#include <cmath>
+
+vtkStandardNewMacro(vtkScattererVolumeRepresentation);
+
+namespace
+{
+// Enough for any reach on any volume a piece can hold; keeps the int conversion sane.
+constexpr int kMaxGhostLevels = 4096;
+}
+
+vtkScattererVolumeRepresentation::vtkScattererVolumeRepresentation()
+{
+  this->VolumeMapper = vtkSmartPointer<vtkScattererTemplateVolumeMapper>::New();
+}
+
+vtkScattererVolumeRepresentation::~vtkScattererVolumeRepresentation() = default;
+
+vtkScattererTemplateVolumeMapper* vtkScattererVolumeRepresentation::GetScattererMapper()
+{
+  return vtkScattererTemplateVolumeMapper::SafeDownCast(this->VolumeMapper);
+}
+
+// Each setter changes the mapper only; the illumination cache and shader notice the
+// change themselves. MarkModified makes ParaView render the view again.
+#define vtkScattererForward(name, type)                                                            \
+  void vtkScattererVolumeRepresentation::Set##name(type value)                                    \
+  {                                                                                                \
+    this->GetScattererMapper()->Set##name(value);                                                  \
+    this->MarkModified();                                                                          \
+  }
+vtkScattererForward(IlluminationEnabled, bool);
+vtkScattererForward(ShadowsEnabled, bool);
+vtkScattererForward(ColorBleedingEnabled, bool);
+vtkScattererForward(ThinPartCheckEnabled, bool);
+vtkScattererForward(BoundaryRefractionEnabled, bool);
+vtkScattererForward(TemplateBlendingEnabled, bool);
+vtkScattererForward(IlluminationMode, int);
+vtkScattererForward(CacheScale, int);
+vtkScattererForward(TemplateRadius, double);
+vtkScattererForward(TemplatesPerMaterial, int);
+vtkScattererForward(PhotonCap, int);
+vtkScattererForward(OcclusionStrength, double);
+vtkScattererForward(LongRangeMultiple, double);
+vtkScattererForward(PhotonThreshold, double);
+#undef vtkScattererForward
+
+const char* vtkScattererVolumeRepresentation::GetShaderFeatures()
+{
+  return this->GetScattererMapper()->GetLastShaderFeatures().c_str();
+}
+
+void vtkScattererVolumeRepresentation::SetCropping(int cropping)
+{
+  this->UserCropping = cropping;
+  this->Superclass::SetCropping(cropping);
+}
+
+int vtkScattererVolumeRepresentation::RequestUpdateExtent(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  if (!this->Superclass::RequestUpdateExtent(request, inputVector, outputVector))
+  {
+    return 0;
+  }
+  this->RequestedGhostLevels = 0;
+  for (int i = 0; i < inputVector[0]->GetNumberOfInformationObjects(); ++i)
+  {
+    vtkInformation* inInfo = inputVector[0]->GetInformationObject(i);
+    using SDDP = vtkStreamingDemandDrivenPipeline;
+    const int pieces = inInfo->Has(SDDP::UPDATE_NUMBER_OF_PIECES())
+      ? inInfo->Get(SDDP::UPDATE_NUMBER_OF_PIECES())
+      : 1;
+    if (pieces <= 1 || !inInfo->Has(vtkDataObject::SPACING()))
+    {
+      continue;
+    }
+    int ghosts = this->GhostLayers;
+    if (ghosts < 0)
+    {
+      const double* spacing = inInfo->Get(vtkDataObject::SPACING());
+      const double finest =
+        std::min({ std::abs(spacing[0]), std::abs(spacing[1]), std::abs(spacing[2]) });
+      const double reach = this->GetScattererMapper()->GetIlluminationReach(spacing);
+      if (!(finest > 0.0) || !(reach > 0.0))
+      {
+        continue;
+      }
+      // One layer more than the reach: trilinear interpolation at the last owned voxel.
+      const double levels = std::ceil(reach / finest) + 1.0;
+      ghosts = static_cast<int>(std::min(levels, static_cast<double>(kMaxGhostLevels)));
+    }
+    const int upstream = inInfo->Has(SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS())
+      ? inInfo->Get(SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS())
+      : 0;
+    inInfo->Set(SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS(), std::max(upstream, ghosts));
+    this->RequestedGhostLevels = std::max(this->RequestedGhostLevels, ghosts);
+  }
+  return 1;
+}
+
+int vtkScattererVolumeRepresentation::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  // The superclass caches the input without its ghost cells (its Cache and
+  // DataBounds then describe the piece this rank owns).
+  if (!this->Superclass::RequestData(request, inputVector, outputVector))
+  {
+    return 0;
+  }
+  this->RendersOwnedPartOnly = false;
+  vtkImageData* input = inputVector[0]->GetNumberOfInformationObjects() == 1
+    ? vtkImageData::GetData(inputVector[0], 0)
+    : nullptr;
+  auto* owned = vtkImageData::SafeDownCast(this->Cache);
+  if (!input || !owned || !input->HasAnyGhostCells())
+  {
+    return 1;
+  }
+  // Keep the ghost layers for the illumination; render only the owned bounds.
+  owned->GetBounds(this->OwnedBounds);
+  vtkSmartPointer<vtkImageData> ghosted = vtkSmartPointer<vtkImageData>::New();
+  ghosted->ShallowCopy(input);
+  // The ghost flags are for the superclass's crop above; the ray caster must see
+  // every voxel as data (the cropping planes below do the hiding).
+  ghosted->GetCellData()->RemoveArray(vtkDataSetAttributes::GhostArrayName());
+  ghosted->GetPointData()->RemoveArray(vtkDataSetAttributes::GhostArrayName());
+  if (this->UseSeparateOpacityArray)
+  {
+    this->AppendOpacityComponent(ghosted);
+  }
+  this->VolumeMapper->SetInputData(ghosted);
+  this->Cache = ghosted;
+  this->DataSize = ghosted->GetActualMemorySize();
+  this->RendersOwnedPartOnly = true;
+  return 1;
+}
+
+void vtkScattererVolumeRepresentation::UpdateMapperParameters()
+{
+  // The superclass sets the user's cropping planes when cropping is on.
+  this->VolumeMapper->SetCropping(this->UserCropping);
+  this->Superclass::UpdateMapperParameters();
+  if (!this->RendersOwnedPartOnly)
+  {
+    return;
+  }
+  double planes[6];
+  std::copy(this->OwnedBounds, this->OwnedBounds + 6, planes);
+  if (this->UserCropping)
+  {
+    const double* user = this->VolumeMapper->GetCroppingRegionPlanes();
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      planes[2 * axis] = std::max(planes[2 * axis], user[2 * axis]);
+      planes[2 * axis + 1] = std::max(planes[2 * axis], std::min(planes[2 * axis + 1], user[2 * axis + 1]));
+    }
+  }
+  this->VolumeMapper->SetCropping(1);
+  this->VolumeMapper->SetCroppingRegionFlagsToSubVolume();
+  this->VolumeMapper->SetCroppingRegionPlanes(planes);
+}
+
+void vtkScattererVolumeRepresentation::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "GhostLayers: " << this->GhostLayers
+     << (this->GhostLayers < 0 ? " (automatic: the illumination reach)" : "") << "\n";
+  os << indent << "RequestedGhostLevels: " << this->RequestedGhostLevels << "\n";
+  os << indent << "UserCropping: " << this->UserCropping << "\n";
+  os << indent << "RendersOwnedPartOnly: " << this->RendersOwnedPartOnly << "\n";
+  if (this->RendersOwnedPartOnly)
+  {
+    os << indent << "OwnedBounds: (" << this->OwnedBounds[0] << ", " << this->OwnedBounds[1]
+       << ", " << this->OwnedBounds[2] << ", " << this->OwnedBounds[3] << ", "
+       << this->OwnedBounds[4] << ", " << this->OwnedBounds[5] << ")\n";
+  }
+  os << indent << "ScattererMapper:\n";
+  this->VolumeMapper->PrintSelf(os, indent.GetNextIndent());
+}

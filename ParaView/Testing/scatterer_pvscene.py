@@ -1,0 +1,156 @@
+"""The CT-head benchmark scene (shared/scenes/ct-head.json) in ParaView, for pvbatch.
+
+Used by the pvbatch tests and by Examples/paraview/render_ct_head_pvbatch.py. Opens the
+CT head through ParaView's raw "Image Reader" (the header values come from the .mhd
+file), because that reader delivers sub-extents with ghost layers to each MPI rank;
+ParaView's MetaImage reader puts the whole volume on rank 0.
+"""
+import os
+import time
+
+from paraview import servermanager
+from paraview.simple import (AddLight, ColorBy, CreateView, GetColorTransferFunction,
+                             GetOpacityTransferFunction, ImageReader, LoadPlugin, Render,
+                             SaveScreenshot, SetActiveView, Show)
+
+# The values of shared/scenes/ct-head.json that ParaView needs (the same numbers as
+# Examples/Common/ScattererCtHeadScene.cxx): camera, one directional scene light,
+# transfer functions in HU. Background black.
+CT_HEAD_SCENE = {
+    'camera': {"position": [-96.0, 572.0, 252.0], "focal_point": [122.0, 135.0, 75.0], "view_up": [0.0, 0.0, 1.0], "view_angle_deg": 30.0},
+    'light': {"position": [222.0, 435.0, 319.0], "focal_point": [122.0, 135.0, 75.0], "intensity": 1.0},
+    'opacity': [[-1024, 0.0], [-600, 0.0], [-450, 0.1], [-50, 0.1], [0, 0.0], [150, 0.0], [300, 0.8], [2986, 0.9]],
+    'color': [[-1024, 0.8, 0.55, 0.42], [-600, 0.85, 0.6, 0.45], [0, 0.95, 0.75, 0.6], [150, 0.95, 0.85, 0.75], [300, 1.0, 1.0, 0.95], [2986, 1.0, 1.0, 1.0]],
+    'scalar_opacity_unit_distance': 1.0,
+}
+
+_MET_TYPES = {"MET_SHORT": "short", "MET_USHORT": "unsigned short", "MET_UCHAR": "unsigned char",
+              "MET_CHAR": "char", "MET_INT": "int", "MET_UINT": "unsigned int",
+              "MET_FLOAT": "float", "MET_DOUBLE": "double"}
+
+
+def default_plugin_path():
+    """The plugin of the build tree this file belongs to (build-paraview/), if any."""
+    here = os.path.dirname(os.path.abspath(__file__))
+    return os.path.join(here, "..", "..", "build-paraview", "lib", "paraview-5.11", "plugins",
+                        "ScattererTemplatePlugin", "ScattererTemplatePlugin.so")
+
+
+def load_plugin(path):
+    if not os.path.isfile(path):
+        raise SystemExit("ScattererTemplate plugin not found: %s (build it with "
+                         "scripts/build-paraview-plugin.sh)" % path)
+    LoadPlugin(path, remote=False, ns=globals())
+
+
+def read_mhd_header(path):
+    header = {}
+    with open(path) as f:
+        for line in f:
+            if "=" in line:
+                key, value = line.split("=", 1)
+                header[key.strip()] = value.strip()
+    for key in ("DimSize", "ElementSpacing", "ElementType", "ElementDataFile"):
+        if key not in header:
+            raise SystemExit("%s: MetaImage header without %s" % (path, key))
+    if header.get("NDims", "3") != "3" or header.get("ElementNumberOfChannels", "1") != "1":
+        raise SystemExit("%s: only 3-D single-channel MetaImage volumes are supported" % path)
+    if header["ElementType"] not in _MET_TYPES:
+        raise SystemExit("%s: element type %s is not supported" % (path, header["ElementType"]))
+    return header
+
+
+def open_volume(mhd_path):
+    """ParaView's raw Image Reader on the data file the .mhd header names."""
+    h = read_mhd_header(mhd_path)
+    dims = [int(v) for v in h["DimSize"].split()]
+    raw = os.path.join(os.path.dirname(os.path.abspath(mhd_path)), h["ElementDataFile"])
+    if not os.path.isfile(raw):
+        raise SystemExit("%s: data file %s not found" % (mhd_path, raw))
+    reader = ImageReader(FileNames=[raw])
+    reader.DataScalarType = _MET_TYPES[h["ElementType"]]
+    msb = h.get("ElementByteOrderMSB", h.get("BinaryDataByteOrderMSB", "False"))
+    reader.DataByteOrder = "BigEndian" if msb.lower() == "true" else "LittleEndian"
+    reader.DataExtent = [0, dims[0] - 1, 0, dims[1] - 1, 0, dims[2] - 1]
+    reader.DataSpacing = [float(v) for v in h["ElementSpacing"].split()]
+    reader.DataOrigin = [float(v) for v in h.get("Offset", "0 0 0").split()]
+    return reader
+
+
+def make_view(size, scene=CT_HEAD_SCENE):
+    """Render view with the scene's camera, black background and its one scene light."""
+    view = CreateView("RenderView")
+    SetActiveView(view)
+    view.ViewSize = list(size)
+    view.OrientationAxesVisibility = 0
+    view.UseColorPaletteForBackground = 0
+    view.Background = [0.0, 0.0, 0.0]
+    view.UseLight = 0  # no light kit: the scene's single directional light only
+    light = AddLight(view=view)
+    light.Coords = "Scene"
+    light.Type = "Directional"
+    light.Position = scene["light"]["position"]
+    light.FocalPoint = scene["light"]["focal_point"]
+    light.Intensity = scene["light"]["intensity"]
+    cam = scene["camera"]
+    view.CameraPosition = cam["position"]
+    view.CameraFocalPoint = cam["focal_point"]
+    view.CameraViewUp = cam["view_up"]
+    view.CameraViewAngle = cam["view_angle_deg"]
+    view.CameraParallelProjection = 0
+    return view
+
+
+def show_volume(source, view, representation, scene=CT_HEAD_SCENE):
+    """Shows `source` as `representation` ("Volume" or "Scatterer Volume") with the
+    scene's transfer functions."""
+    display = Show(source, view)
+    display.SetRepresentationType(representation)
+    ColorBy(display, ("POINTS", "ImageFile"))
+    lut = GetColorTransferFunction("ImageFile")
+    lut.AutomaticRescaleRangeMode = "Never"
+    lut.ColorSpace = "RGB"
+    lut.RGBPoints = [v for point in scene["color"] for v in point]
+    pwf = GetOpacityTransferFunction("ImageFile")
+    pwf.Points = [v for x, a in scene["opacity"] for v in (x, a, 0.5, 0.0)]
+    display.ScalarOpacityUnitDistance = scene["scalar_opacity_unit_distance"]
+    display.Shade = 0
+    return display
+
+
+def timed_renders(view, frames):
+    """First frame (pipeline update, ghost exchange, illumination cache) and then
+    `frames` more frames with a camera nudge each, so every one really renders."""
+    start = time.perf_counter()
+    Render(view)
+    first = (time.perf_counter() - start) * 1000.0
+    times = []
+    for i in range(frames):
+        view.CameraPosition = [c + (0.001 if i % 2 == 0 else -0.001)
+                               for c in view.CameraPosition]
+        start = time.perf_counter()
+        Render(view)
+        times.append((time.perf_counter() - start) * 1000.0)
+    return first, times
+
+
+def number_of_ranks():
+    return servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
+
+
+def save(view, path, size):
+    SaveScreenshot(path, view, ImageResolution=list(size))
+
+
+def rank0_info(display):
+    """The information-only properties of the Scatterer Volume representation (what
+    rank 0 did on the last update and frame), by name."""
+    display.SMProxy.UpdatePropertyInformation()
+    names = ("ScattererRequestedGhostLayersInfo", "ScattererRendersOwnedPartOnlyInfo",
+             "ScattererOwnedBoundsInfo", "ScattererPieceMemoryKiBInfo",
+             "ScattererShaderFeaturesInfo")
+    info = {}
+    for name in names:
+        prop = display.SMProxy.GetProperty(name)
+        info[name] = [prop.GetElement(i) for i in range(prop.GetNumberOfElements())]
+    return info
