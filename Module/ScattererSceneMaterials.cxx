@@ -62,7 +62,7 @@ SceneMaterial Make(double lo, double hi, double alphaUnit, double n, const doubl
 }
 
 MaterialSet BuildMaterials(const std::vector<RequestedMaterial>& requested,
-  vtkVolumeProperty* property, const double dataRange[2])
+  vtkVolumeProperty* property, const double dataRange[2], const double derivationRange[2])
 {
   MaterialSet set;
   vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
@@ -87,17 +87,17 @@ MaterialSet BuildMaterials(const std::vector<RequestedMaterial>& requested,
     return set;
   }
 
-  // Derive: intervals of the data range where the opacity TF is visible.
+  // Derive: intervals of the derivation range where the opacity TF is visible.
   struct Interval
   {
     double Lo, Hi, MaxAlpha, Weight, WeightedScalar;
   };
   std::vector<Interval> intervals;
-  const double step = (dataRange[1] - dataRange[0]) / (kSamples - 1);
+  const double step = (derivationRange[1] - derivationRange[0]) / (kSamples - 1);
   bool inside = false;
   for (int i = 0; i < kSamples; ++i)
   {
-    const double s = dataRange[0] + i * step;
+    const double s = derivationRange[0] + i * step;
     const double a = opacity->GetValue(s);
     if (a > kVisible)
     {

@@ -47,9 +47,12 @@ constexpr int kMaxMaterials = 8;
  * Materials for one volume. @p dataRange is the finite range of the rendered
  * scalars (what VTK maps its transfer-function tables over); @p property
  * supplies the opacity transfer function and (for derived materials) colours.
+ * Without requested materials, they are derived from the opacity transfer
+ * function over @p derivationRange (the data range, or the whole volume's range
+ * for a piece of a split volume, so that every piece derives the same ones).
  */
 MaterialSet BuildMaterials(const std::vector<RequestedMaterial>& requested,
-  vtkVolumeProperty* property, const double dataRange[2]);
+  vtkVolumeProperty* property, const double dataRange[2], const double derivationRange[2]);
 
 /** Speed ratios n_m / n_k (row m = sample material) for the shader, row-major. */
 std::vector<float> SpeedRatios(const MaterialSet& set);

@@ -295,6 +295,20 @@ double vtkScattererTemplateVolumeMapper::GetLastCacheUpdateMilliseconds() const
   return this->Internals->LastCacheMs;
 }
 
+void vtkScattererTemplateVolumeMapper::SetMaterialDerivationRange(double lo, double hi)
+{
+  if (!std::isfinite(lo) || !std::isfinite(hi))
+  {
+    vtkErrorMacro("SetMaterialDerivationRange(" << lo << ", " << hi
+                                               << "): the range must be finite; ignored.");
+    return;
+  }
+  // No Modified(): the materials are re-derived every frame and the templates and
+  // cache follow their keys (a mapper Modified() would rebuild VTK's shader).
+  this->MaterialDerivationRange[0] = lo;
+  this->MaterialDerivationRange[1] = hi;
+}
+
 double vtkScattererTemplateVolumeMapper::GetIlluminationReach(const double spacing[3]) const
 {
   if (!this->IlluminationEnabled)
@@ -477,7 +491,20 @@ void vtkScattererTemplateVolumeMapper::GPURender(vtkRenderer* ren, vtkVolume* vo
 
   double range[2];
   scalars->GetFiniteRange(range, 0);
-  plan.Materials = scatterer_scene::BuildMaterials(in.Requested, property, range);
+  // Materials are derived over the derivation range when one is set (a piece of a
+  // split volume: the whole volume's range); the occlusion field's opacity table
+  // spans it too, so every piece classifies a scalar exactly as the whole does.
+  const bool derivationSet = this->MaterialDerivationRange[0] <= this->MaterialDerivationRange[1];
+  double derivation[2] = { range[0], range[1] };
+  double fieldRange[2] = { range[0], range[1] };
+  if (derivationSet)
+  {
+    derivation[0] = this->MaterialDerivationRange[0];
+    derivation[1] = this->MaterialDerivationRange[1];
+    fieldRange[0] = std::min(range[0], derivation[0]);
+    fieldRange[1] = std::max(range[1], derivation[1]);
+  }
+  plan.Materials = scatterer_scene::BuildMaterials(in.Requested, property, range, derivation);
   in.ActiveMaterials = static_cast<int>(plan.Materials.Materials.size());
   if (plan.Materials.Materials.empty())
   {
@@ -580,7 +607,7 @@ void vtkScattererTemplateVolumeMapper::GPURender(vtkRenderer* ren, vtkVolume* vo
   in.LastCacheMs = 0.0;
   if (f.Cached)
   {
-    if (!in.UpdateCache(this, ren, vol, image, scalars, cellFlag, range, plan, unlit))
+    if (!in.UpdateCache(this, ren, vol, image, scalars, cellFlag, fieldRange, plan, unlit))
     {
       renderStock("the illumination cache could not be computed");
       return;
@@ -933,6 +960,15 @@ void vtkScattererTemplateVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TemplateBlendingEnabled: " << onOff(this->TemplateBlendingEnabled) << "\n";
   os << indent << "ShaderPathSelection: "
      << (this->ShaderPathSelection == AUTOMATIC ? "Automatic" : "AsRequested") << "\n";
+  os << indent << "MaterialDerivationRange: ";
+  if (this->MaterialDerivationRange[0] <= this->MaterialDerivationRange[1])
+  {
+    os << this->MaterialDerivationRange[0] << ", " << this->MaterialDerivationRange[1] << "\n";
+  }
+  else
+  {
+    os << "(the data range)\n";
+  }
   os << indent << "TemplateRadius: " << this->TemplateRadius
      << (this->TemplateRadius > 0 ? "" : " (automatic: 10 x mean spacing)") << "\n";
   os << indent << "TemplatesPerMaterial: " << this->TemplatesPerMaterial << "\n";

@@ -256,6 +256,18 @@ public:
   void AddMaterialsFromLabelTransferFunctions(vtkVolumeProperty* property);
   void RemoveAllMaterials();
   int GetNumberOfRequestedMaterials() const;
+
+  /**
+   * Scalar range over which materials are derived from the opacity transfer
+   * function when none are given. Default (lo > hi, or after
+   * ClearMaterialDerivationRange): the input's data range. A piece of a split
+   * volume should get the whole volume's range, so that every piece derives the
+   * same materials and templates as the whole volume (the ParaView plugin sets
+   * it). Non-finite values are rejected with an error.
+   */
+  void SetMaterialDerivationRange(double lo, double hi);
+  void ClearMaterialDerivationRange() { this->SetMaterialDerivationRange(1.0, 0.0); }
+  const double* GetMaterialDerivationRange() const { return this->MaterialDerivationRange; }
   ///@}
 
   /** Time of the last change to an illumination parameter. */
@@ -311,6 +323,7 @@ protected:
   int IlluminationInterval = 4;
   double PhotonThreshold = 0.002;
   double GeneratorThreshold = 0.01;
+  double MaterialDerivationRange[2] = { 1.0, 0.0 };
   vtkTimeStamp IlluminationTime;
 
 private:

@@ -28,10 +28,7 @@ bash scripts/prepare-data.sh
 PEER=()
 PVDIR="$BUILD/paraview-python"
 if dpkg -s paraview > /dev/null 2>&1; then
-  if [ ! -d "$PVDIR/usr/lib/python3/dist-packages/vtkmodules" ]; then
-    mkdir -p "$PVDIR"
-    (cd "$PVDIR" && apt-get download python3-paraview && dpkg-deb -x python3-paraview_*.deb .) || true
-  fi
+  bash scripts/unpack-paraview-python.sh "$PVDIR" > /dev/null || true
   if [ -d "$PVDIR/usr/lib/python3/dist-packages/vtkmodules" ]; then
     PEER=(--peer-python "env PYTHONPATH=$(cd "$PVDIR" && pwd)/usr/lib/python3/dist-packages /usr/bin/python3"
           --peer-script "$(pwd)/Benchmarks/accuracy/vtk92_scattering_peer.py")

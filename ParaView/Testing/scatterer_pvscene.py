@@ -10,19 +10,55 @@ import time
 
 from paraview import servermanager
 from paraview.simple import (AddLight, ColorBy, CreateView, GetColorTransferFunction,
-                             GetOpacityTransferFunction, ImageReader, LoadPlugin, Render,
+                             GetOpacityTransferFunction, ImageReader, LoadPlugin,
                              SaveScreenshot, SetActiveView, Show)
 
 # The values of shared/scenes/ct-head.json that ParaView needs (the same numbers as
 # Examples/Common/ScattererCtHeadScene.cxx): camera, one directional scene light,
 # transfer functions in HU. Background black.
 CT_HEAD_SCENE = {
-    'camera': {"position": [-96.0, 572.0, 252.0], "focal_point": [122.0, 135.0, 75.0], "view_up": [0.0, 0.0, 1.0], "view_angle_deg": 30.0},
-    'light': {"position": [222.0, 435.0, 319.0], "focal_point": [122.0, 135.0, 75.0], "intensity": 1.0},
-    'opacity': [[-1024, 0.0], [-600, 0.0], [-450, 0.1], [-50, 0.1], [0, 0.0], [150, 0.0], [300, 0.8], [2986, 0.9]],
-    'color': [[-1024, 0.8, 0.55, 0.42], [-600, 0.85, 0.6, 0.45], [0, 0.95, 0.75, 0.6], [150, 0.95, 0.85, 0.75], [300, 1.0, 1.0, 0.95], [2986, 1.0, 1.0, 1.0]],
-    'scalar_opacity_unit_distance': 1.0,
+    "camera": {"position": [-96.0, 572.0, 252.0], "focal_point": [122.0, 135.0, 75.0],
+               "view_up": [0.0, 0.0, 1.0], "view_angle_deg": 30.0},
+    "light": {"position": [222.0, 435.0, 319.0], "focal_point": [122.0, 135.0, 75.0],
+              "intensity": 1.0},
+    "opacity": [[-1024, 0.0], [-600, 0.0], [-450, 0.1], [-50, 0.1], [0, 0.0], [150, 0.0],
+                [300, 0.8], [2986, 0.9]],
+    "color": [[-1024, 0.8, 0.55, 0.42], [-600, 0.85, 0.6, 0.45], [0, 0.95, 0.75, 0.6],
+              [150, 0.95, 0.85, 0.75], [300, 1.0, 1.0, 0.95], [2986, 1.0, 1.0, 1.0]],
+    "scalar_opacity_unit_distance": 1.0,
 }
+
+# A synthetic scene whose lighting depends on voxels across a piece border: a
+# translucent slab (value 100) with an opaque sheet (value 250) just before x = 64,
+# over the lower half of z, lit along +x and seen from the side. Split into two
+# ranks along x, the shadow the sheet casts falls on the other rank's piece.
+SPLIT_SHADOW_DIMS = (128, 40, 48)
+SPLIT_SHADOW_SCENE = {
+    "camera": {"position": [63.5, -260.0, 23.5], "focal_point": [63.5, 19.5, 23.5],
+               "view_up": [0.0, 0.0, 1.0], "view_angle_deg": 30.0},
+    "light": {"position": [-100.0, 19.5, 23.5], "focal_point": [0.0, 19.5, 23.5],
+              "intensity": 1.0},
+    "opacity": [[0, 0.0], [90, 0.0], [100, 0.08], [200, 0.08], [250, 1.0], [255, 1.0]],
+    "color": [[0, 1.0, 1.0, 1.0], [255, 1.0, 1.0, 1.0]],
+    "scalar_opacity_unit_distance": 1.0,
+}
+
+
+def write_split_shadow_volume(folder):
+    """Writes the split-shadow volume as <folder>/split-shadow.mhd (+ .raw)."""
+    import numpy
+    nx, ny, nz = SPLIT_SHADOW_DIMS
+    volume = numpy.full((nz, ny, nx), 100, dtype=numpy.uint8)  # [z][y][x], x fastest
+    volume[:nz // 2, :, 58:62] = 250
+    os.makedirs(folder, exist_ok=True)
+    volume.tofile(os.path.join(folder, "split-shadow.raw"))
+    path = os.path.join(folder, "split-shadow.mhd")
+    with open(path, "w") as f:
+        f.write("ObjectType = Image\nNDims = 3\nDimSize = %d %d %d\n" % (nx, ny, nz))
+        f.write("ElementType = MET_UCHAR\nElementSpacing = 1 1 1\nOffset = 0 0 0\n")
+        f.write("ElementDataFile = split-shadow.raw\n")
+    return path
+
 
 _MET_TYPES = {"MET_SHORT": "short", "MET_USHORT": "unsigned short", "MET_UCHAR": "unsigned char",
               "MET_CHAR": "char", "MET_INT": "int", "MET_UINT": "unsigned int",
@@ -78,7 +114,7 @@ def open_volume(mhd_path):
 
 
 def make_view(size, scene=CT_HEAD_SCENE):
-    """Render view with the scene's camera, black background and its one scene light."""
+    """Render view with a black background and the scene's one light."""
     view = CreateView("RenderView")
     SetActiveView(view)
     view.ViewSize = list(size)
@@ -92,13 +128,17 @@ def make_view(size, scene=CT_HEAD_SCENE):
     light.Position = scene["light"]["position"]
     light.FocalPoint = scene["light"]["focal_point"]
     light.Intensity = scene["light"]["intensity"]
+    return view
+
+
+def apply_camera(view, scene=CT_HEAD_SCENE):
+    """The scene's camera; after Show, which may reset the camera to the data."""
     cam = scene["camera"]
     view.CameraPosition = cam["position"]
     view.CameraFocalPoint = cam["focal_point"]
     view.CameraViewUp = cam["view_up"]
     view.CameraViewAngle = cam["view_angle_deg"]
     view.CameraParallelProjection = 0
-    return view
 
 
 def show_volume(source, view, representation, scene=CT_HEAD_SCENE):
@@ -107,6 +147,7 @@ def show_volume(source, view, representation, scene=CT_HEAD_SCENE):
     display = Show(source, view)
     display.SetRepresentationType(representation)
     ColorBy(display, ("POINTS", "ImageFile"))
+    display.SetScalarBarVisibility(view, False)
     lut = GetColorTransferFunction("ImageFile")
     lut.AutomaticRescaleRangeMode = "Never"
     lut.ColorSpace = "RGB"
@@ -115,21 +156,23 @@ def show_volume(source, view, representation, scene=CT_HEAD_SCENE):
     pwf.Points = [v for x, a in scene["opacity"] for v in (x, a, 0.5, 0.0)]
     display.ScalarOpacityUnitDistance = scene["scalar_opacity_unit_distance"]
     display.Shade = 0
+    apply_camera(view, scene)
     return display
 
 
 def timed_renders(view, frames):
     """First frame (pipeline update, ghost exchange, illumination cache) and then
-    `frames` more frames with a camera nudge each, so every one really renders."""
+    `frames` more frames with a camera nudge each, so every one really renders.
+    view.StillRender, not simple.Render: that one resets the camera on its first call."""
     start = time.perf_counter()
-    Render(view)
+    view.StillRender()
     first = (time.perf_counter() - start) * 1000.0
     times = []
     for i in range(frames):
         view.CameraPosition = [c + (0.001 if i % 2 == 0 else -0.001)
                                for c in view.CameraPosition]
         start = time.perf_counter()
-        Render(view)
+        view.StillRender()
         times.append((time.perf_counter() - start) * 1000.0)
     return first, times
 

@@ -7,10 +7,12 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
+#include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
 #include "vtkScattererTemplateVolumeMapper.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkVolumeProperty.h"
 
 #include <algorithm>
 #include <cmath>
@@ -25,7 +27,13 @@ constexpr int kMaxGhostLevels = 4096;
 
 vtkScattererVolumeRepresentation::vtkScattererVolumeRepresentation()
 {
-  this->VolumeMapper = vtkSmartPointer<vtkScattererTemplateVolumeMapper>::New();
+  auto mapper = vtkSmartPointer<vtkScattererTemplateVolumeMapper>::New();
+  // As ParaView's own image volume mapper renders still frames (vtkMultiBlockVolume-
+  // Mapper -> vtkSmartVolumeMapper -> GPU mapper): jittered ray starts and the fixed
+  // sample distance, so "Scatterer Volume" with illumination off looks as "Volume".
+  mapper->UseJitteringOn();
+  mapper->AutoAdjustSampleDistancesOff();
+  this->VolumeMapper = mapper;
 }
 
 vtkScattererVolumeRepresentation::~vtkScattererVolumeRepresentation() = default;
@@ -155,6 +163,21 @@ void vtkScattererVolumeRepresentation::UpdateMapperParameters()
   // The superclass sets the user's cropping planes when cropping is on.
   this->VolumeMapper->SetCropping(this->UserCropping);
   this->Superclass::UpdateMapperParameters();
+  // Materials come from the opacity transfer function over its own range, which
+  // ParaView keeps the same on every rank (the whole data range unless the user
+  // chose another): every piece then derives the materials the whole volume would,
+  // where each piece's own data range would not.
+  vtkPiecewiseFunction* opacity = this->Property ? this->Property->GetScalarOpacity() : nullptr;
+  if (opacity && opacity->GetSize() > 0)
+  {
+    double range[2];
+    opacity->GetRange(range);
+    this->GetScattererMapper()->SetMaterialDerivationRange(range[0], range[1]);
+  }
+  else
+  {
+    this->GetScattererMapper()->ClearMaterialDerivationRange();
+  }
   if (!this->RendersOwnedPartOnly)
   {
     return;
