@@ -14,7 +14,8 @@ import math
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+here = os.path.dirname(os.path.abspath(__file__))
+sys.path[:0] = [here, os.path.join(here, "..", "Python")]
 import scatterer_pvcompare as compare  # noqa: E402
 import scatterer_pvscene as scenes  # noqa: E402
 from paraview.simple import Hide  # noqa: E402

@@ -1,6 +1,7 @@
 """The CT-head benchmark scene (shared/scenes/ct-head.json) in ParaView, for pvbatch.
 
-Used by the pvbatch tests and by Examples/paraview/render_ct_head_pvbatch.py. Opens the
+Used by the pvbatch tests (ParaView/Testing), Examples/paraview/render_ct_head_pvbatch.py
+and the ParaView benchmark (Benchmarks/paraview). Opens the
 CT head through ParaView's raw "Image Reader" (the header values come from the .mhd
 file), because that reader delivers sub-extents with ghost layers to each MPI rank;
 ParaView's MetaImage reader puts the whole volume on rank 0.
@@ -66,7 +67,7 @@ _MET_TYPES = {"MET_SHORT": "short", "MET_USHORT": "unsigned short", "MET_UCHAR":
 
 
 def default_plugin_path():
-    """The plugin of the build tree this file belongs to (build-paraview/), if any."""
+    """The plugin in the source tree's default build folder (build-paraview/)."""
     here = os.path.dirname(os.path.abspath(__file__))
     return os.path.join(here, "..", "..", "build-paraview", "lib", "paraview-5.11", "plugins",
                         "ScattererTemplatePlugin", "ScattererTemplatePlugin.so")
