@@ -15,7 +15,8 @@ status=0
 # parallel load (EAGAIN; VTK then aborts) gets one more try; real failures repeat.
 bash scripts/xvfb.sh ctest --test-dir "${BUILD_DIR:-build}" --output-on-failure -j 2 \
   --repeat until-pass:2 "$@" || status=1
-# The ParaView plugin's pvbatch tests (1 and 2 MPI ranks; label "paraview").
+# The ParaView plugin's pvbatch tests (1 and 2 MPI ranks; label "paraview"); the same
+# one retry, for an X connection refused when two ranks open theirs at once.
 bash scripts/xvfb.sh ctest --test-dir "${PV_BUILD_DIR:-build-paraview}" --output-on-failure \
-  "$@" || status=1
+  --repeat until-pass:2 "$@" || status=1
 exit $status
