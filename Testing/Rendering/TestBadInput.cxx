@@ -161,6 +161,10 @@ TEST(BadInput, AbsurdParametersAreClampedOrRejectedWithTheirName)
   stage.Mapper->AddScalarRangeMaterial(100, 200, -1.0, 1, 1, 1);
   EXPECT_TRUE(capture.Has("refractive index > 0")) << capture.Window->Text;
   EXPECT_EQ(stage.Mapper->GetNumberOfRequestedMaterials(), 0);
+  stage.Mapper->SetMaterialDerivationRange(0.0, std::numeric_limits<double>::infinity());
+  EXPECT_TRUE(capture.Has("the range must be finite")) << capture.Window->Text;
+  EXPECT_GT(stage.Mapper->GetMaterialDerivationRange()[0], stage.Mapper->GetMaterialDerivationRange()[1])
+    << "still unset: materials come from the data range";
   // After all that the mapper still illuminates, with the clamped values.
   const auto image = stage.Render();
   EXPECT_EQ(stage.Mapper->GetLastShaderFeatures().rfind("stock", 0), std::string::npos)
