@@ -15,8 +15,9 @@ status=0
 # parallel load (EAGAIN; VTK then aborts) gets one more try; real failures repeat.
 bash scripts/xvfb.sh ctest --test-dir "${BUILD_DIR:-build}" --output-on-failure -j 2 \
   --repeat until-pass:2 "$@" || status=1
-# The ParaView plugin's pvbatch tests (1 and 2 MPI ranks; label "paraview"); the same
-# one retry, for an X connection refused when two ranks open theirs at once.
+# The ParaView plugin's pvbatch tests (1 and 2 MPI ranks; label "paraview"). Under Xvfb
+# one rank's X connection is refused in about 1 of 20 two-rank runs (measured: 2 of 40;
+# pvbatch then aborts before any check): up to two more tries. A real failure repeats.
 bash scripts/xvfb.sh ctest --test-dir "${PV_BUILD_DIR:-build-paraview}" --output-on-failure \
-  --repeat until-pass:2 "$@" || status=1
+  --repeat until-pass:3 "$@" || status=1
 exit $status
