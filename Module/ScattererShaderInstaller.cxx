@@ -112,24 +112,8 @@ void InstallIllumination(vtkVolume* volume, const std::string& declarations,
   }
 }
 
-void RemoveUniformsExcept(vtkVolume* volume, const std::vector<std::string>& keep)
-{
-  vtkOpenGLShaderProperty* sp = Property(volume);
-  if (!sp)
-  {
-    return;
-  }
-  vtkUniforms* u = sp->GetFragmentCustomUniforms();
-  for (const auto& name : IlluminationUniformNames(u))
-  {
-    if (std::find(keep.begin(), keep.end(), name) == keep.end())
-    {
-      u->RemoveUniform(name.c_str());
-    }
-  }
-}
-
-void SetIlluminationUniforms(vtkVolume* volume, const UniformValues& v)
+void SetIlluminationUniforms(
+  vtkVolume* volume, const UniformValues& v, const std::vector<Sampler>& samplers)
 {
   vtkOpenGLShaderProperty* sp = Property(volume);
   if (!sp || !v.Lights)
@@ -137,26 +121,36 @@ void SetIlluminationUniforms(vtkVolume* volume, const UniformValues& v)
     return;
   }
   vtkUniforms* u = sp->GetFragmentCustomUniforms();
-  u->SetUniformi("st_templatesPerMaterial", v.TemplatesPerMaterial);
-  u->SetUniformi("st_photonCount", v.PhotonCount);
-  u->SetUniformf("st_photonThreshold", v.PhotonThreshold);
-  u->SetUniformf("st_occlusionScale", v.OcclusionScale);
-  u->SetUniformf("st_longRange", v.LongRange);
-  u->SetUniformi("st_interval", v.Interval);
-  u->SetUniform3f("st_unlit", v.Unlit);
-  u->SetUniform3f("st_toTexX", v.ToTex[0]);
-  u->SetUniform3f("st_toTexY", v.ToTex[1]);
-  u->SetUniform3f("st_toTexZ", v.ToTex[2]);
-  u->SetUniform3f("st_cacheTexScale", v.CacheTexScale);
-  u->SetUniform3f("st_cacheTexOffset", v.CacheTexOffset);
-  u->SetUniform3f("st_indexOrigin", v.IndexOrigin);
+  // Every st_* uniform this frame uses: the names set below and the samplers.
+  std::vector<std::string> used;
+  for (const auto& sampler : samplers)
+  {
+    used.push_back(sampler.Name);
+  }
+  auto name = [&used](const char* uniform) {
+    used.emplace_back(uniform);
+    return uniform;
+  };
+  u->SetUniformi(name("st_templatesPerMaterial"), v.TemplatesPerMaterial);
+  u->SetUniformi(name("st_photonCount"), v.PhotonCount);
+  u->SetUniformf(name("st_photonThreshold"), v.PhotonThreshold);
+  u->SetUniformf(name("st_occlusionScale"), v.OcclusionScale);
+  u->SetUniformf(name("st_longRange"), v.LongRange);
+  u->SetUniformi(name("st_interval"), v.Interval);
+  u->SetUniform3f(name("st_unlit"), v.Unlit);
+  u->SetUniform3f(name("st_toTexX"), v.ToTex[0]);
+  u->SetUniform3f(name("st_toTexY"), v.ToTex[1]);
+  u->SetUniform3f(name("st_toTexZ"), v.ToTex[2]);
+  u->SetUniform3f(name("st_cacheTexScale"), v.CacheTexScale);
+  u->SetUniform3f(name("st_cacheTexOffset"), v.CacheTexOffset);
+  u->SetUniform3f(name("st_indexOrigin"), v.IndexOrigin);
   const scatterer_scene::LightSet& lights = *v.Lights;
   const int nl = lights.Count();
-  Set3(u, "st_lightDir", lights.Direction.data(), nl);
-  Set3(u, "st_lightPos", lights.Position.data(), nl);
-  Set3(u, "st_lightColor", lights.Color.data(), nl);
-  u->SetUniform1iv("st_lightPositional", nl, lights.Positional.data());
-  u->SetUniform3f("st_ambient", lights.Ambient);
+  Set3(u, name("st_lightDir"), lights.Direction.data(), nl);
+  Set3(u, name("st_lightPos"), lights.Position.data(), nl);
+  Set3(u, name("st_lightColor"), lights.Color.data(), nl);
+  u->SetUniform1iv(name("st_lightPositional"), nl, lights.Positional.data());
+  u->SetUniform3f(name("st_ambient"), lights.Ambient);
   // Brightness of an unoccluded white sample, to normalize the visibility
   // that darkens VTK's own (Phong) shading.
   float unlit = (lights.Ambient[0] + lights.Ambient[1] + lights.Ambient[2]) / 3.0f;
@@ -164,13 +158,23 @@ void SetIlluminationUniforms(vtkVolume* volume, const UniformValues& v)
   {
     unlit += (lights.Color[3 * l] + lights.Color[3 * l + 1] + lights.Color[3 * l + 2]) / 3.0f;
   }
-  u->SetUniformf("st_unlitNorm", unlit > 0.0f ? 1.0f / unlit : 1.0f);
+  u->SetUniformf(name("st_unlitNorm"), unlit > 0.0f ? 1.0f / unlit : 1.0f);
   const int nm = static_cast<int>(v.MaterialRanges.size() / 2);
   u->SetUniform2fv(
-    "st_matRange", nm, reinterpret_cast<const float(*)[2]>(v.MaterialRanges.data()));
-  Set3(u, "st_matColor", v.MaterialColors.data(), nm);
-  u->SetUniform1fv("st_speedRatio", nm * nm, v.SpeedRatios.data());
-  u->SetUniform1fv("st_opacityRatio", nm * nm, v.OpacityRatios.data());
+    name("st_matRange"), nm, reinterpret_cast<const float(*)[2]>(v.MaterialRanges.data()));
+  Set3(u, name("st_matColor"), v.MaterialColors.data(), nm);
+  u->SetUniform1fv(name("st_speedRatio"), nm * nm, v.SpeedRatios.data());
+  u->SetUniform1fv(name("st_opacityRatio"), nm * nm, v.OpacityRatios.data());
+  // Drop the rest (e.g. the other mode's samplers, which would stay declared as
+  // plain ints). Removing only what is unused keeps the uniform list, and so the
+  // shader, unchanged from frame to frame.
+  for (const auto& existing : IlluminationUniformNames(u))
+  {
+    if (std::find(used.begin(), used.end(), existing) == used.end())
+    {
+      u->RemoveUniform(existing.c_str());
+    }
+  }
 }
 
 void RemoveIllumination(vtkVolume* volume)

@@ -60,11 +60,13 @@ void InstallIllumination(vtkVolume* volume, const std::string& declarations,
   const std::string& shadingInit, const std::string& shading,
   const std::vector<Sampler>& samplers);
 
-/** Removes st_* uniforms other than @p keep (e.g. samplers of the other mode). */
-void RemoveUniformsExcept(vtkVolume* volume, const std::vector<std::string>& keep);
-
-/** Sets every st_* uniform; values only, so no shader rebuild unless sizes change. */
-void SetIlluminationUniforms(vtkVolume* volume, const UniformValues& values);
+/**
+ * Sets every st_* value uniform (values only, so no shader rebuild unless sizes
+ * change) and removes the st_* uniforms that are neither set here nor one of the
+ * @p samplers (whose texture units the caller sets).
+ */
+void SetIlluminationUniforms(
+  vtkVolume* volume, const UniformValues& values, const std::vector<Sampler>& samplers);
 
 /** Removes the replacements and every st_* uniform, if present. */
 SCATTERERTEMPLATE_EXPORT void RemoveIllumination(vtkVolume* volume);

@@ -680,21 +680,7 @@ void vtkScattererTemplateVolumeMapper::GPURender(vtkRenderer* ren, vtkVolume* vo
   }
   u.SpeedRatios = scatterer_scene::SpeedRatios(plan.Materials);
   u.OpacityRatios = scatterer_scene::OpacityRatios(plan.Materials);
-  // Samplers of the other mode would stay declared as plain ints: drop them.
-  {
-    std::vector<std::string> keep = { "st_templatesPerMaterial", "st_photonCount",
-      "st_photonThreshold", "st_occlusionScale", "st_longRange", "st_interval", "st_unlit",
-      "st_toTexX", "st_toTexY", "st_toTexZ", "st_lightDir", "st_lightPos", "st_lightColor",
-      "st_lightPositional", "st_ambient", "st_unlitNorm", "st_matRange", "st_matColor",
-      "st_speedRatio", "st_opacityRatio", "st_cacheTexScale", "st_cacheTexOffset",
-      "st_indexOrigin" }; // every name SetIlluminationUniforms sets
-    for (const auto& sampler : samplers)
-    {
-      keep.push_back(sampler.Name);
-    }
-    scatterer_shader::RemoveUniformsExcept(vol, keep);
-  }
-  scatterer_shader::SetIlluminationUniforms(vol, u);
+  scatterer_shader::SetIlluminationUniforms(vol, u, samplers);
 
   bool watched = false;
   for (const auto& d : in.Volumes)

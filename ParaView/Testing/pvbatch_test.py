@@ -51,7 +51,7 @@ def within(stats, tolerance):
 _views = {}
 
 
-def render(args, mhd, scene, representation, path, ghost_layers=-1, illumination=True):
+def render(mhd, scene, representation, path, ghost_layers=-1, illumination=True):
     # One view per scene and process: a second render view would start from a camera
     # that ParaView resets to the data.
     if id(scene) not in _views:
@@ -68,7 +68,7 @@ def render(args, mhd, scene, representation, path, ghost_layers=-1, illumination
     Hide(reader, view)
     print("rendered %s (%s, ghost layers %s): first frame %.0f ms, then %.0f ms; %s" % (
         os.path.basename(path), representation, ghost_layers, first, min(frames),
-        {k: v for k, v in info.items()}))
+        info))
     return info
 
 
@@ -76,17 +76,17 @@ def ct_head_one_rank(args):
     ours = os.path.join(args.out_dir, "ct-head-1rank.png")
     stock = os.path.join(args.out_dir, "ct-head-1rank-stock.png")
     off = os.path.join(args.out_dir, "ct-head-1rank-off.png")
-    info = render(args, args.data, scenes.CT_HEAD_SCENE, "Scatterer Volume", ours)
+    info = render(args.data, scenes.CT_HEAD_SCENE, "Scatterer Volume", ours)
     check(info["ScattererShaderFeaturesInfo"][0].startswith("cached lights=1"),
           "the plugin's mapper ran its illumination shader: %s" % info["ScattererShaderFeaturesInfo"])
     error = compare.baseline_error(ours, args.baseline, args.out_dir)
     check(error <= BASELINE_THRESHOLD,
           "matches the baseline %s: error %.4f <= %.2f" % (args.baseline, error, BASELINE_THRESHOLD))
-    render(args, args.data, scenes.CT_HEAD_SCENE, "Volume", stock)
+    render(args.data, scenes.CT_HEAD_SCENE, "Volume", stock)
     lit = compare.difference(ours, stock)
     check(lit["mean"] >= 5.0, "differs from ParaView's Volume representation (the illumination "
           "shows): mean difference %.2f >= 5" % lit["mean"])
-    render(args, args.data, scenes.CT_HEAD_SCENE, "Scatterer Volume", off, illumination=False)
+    render(args.data, scenes.CT_HEAD_SCENE, "Scatterer Volume", off, illumination=False)
     same = compare.difference(off, stock)
     check(within(same, STOCK_TOLERANCE), "with ScattererIllumination off it renders as "
           "Volume does: %s within %s" % (same, STOCK_TOLERANCE))
@@ -95,7 +95,7 @@ def ct_head_one_rank(args):
 def ct_head_two_ranks(args):
     check(scenes.number_of_ranks() == 2, "runs on 2 ranks (got %d)" % scenes.number_of_ranks())
     ours = os.path.join(args.out_dir, "ct-head-2ranks.png")
-    info = render(args, args.data, scenes.CT_HEAD_SCENE, "Scatterer Volume", ours)
+    info = render(args.data, scenes.CT_HEAD_SCENE, "Scatterer Volume", ours)
     header = scenes.read_mhd_header(args.data)
     spacing = [float(v) for v in header["ElementSpacing"].split()]
     dims = [int(v) for v in header["DimSize"].split()]
@@ -117,14 +117,14 @@ def ct_head_two_ranks(args):
           "2-rank image matches the 1-rank image: %s within %s" % (stats, CT_HEAD_TWO_RANK_TOLERANCE))
     # For scale: the same comparison for ParaView's own Volume representation.
     stock = os.path.join(args.out_dir, "ct-head-2ranks-stock.png")
-    render(args, args.data, scenes.CT_HEAD_SCENE, "Volume", stock)
+    render(args.data, scenes.CT_HEAD_SCENE, "Volume", stock)
     print("for scale, ParaView's Volume, 2 ranks vs 1: %s"
           % compare.difference(stock, os.path.join(args.out_dir, "ct-head-1rank-stock.png")))
 
 
 def split_shadow_one_rank(args):
     mhd = scenes.write_split_shadow_volume(args.out_dir)
-    render(args, mhd, scenes.SPLIT_SHADOW_SCENE, "Scatterer Volume",
+    render(mhd, scenes.SPLIT_SHADOW_SCENE, "Scatterer Volume",
            os.path.join(args.out_dir, "split-shadow-1rank.png"))
 
 
@@ -134,13 +134,13 @@ def split_shadow_two_ranks(args):
     reference = os.path.join(args.out_dir, "split-shadow-1rank.png")
     with_ghosts = os.path.join(args.out_dir, "split-shadow-2ranks.png")
     without = os.path.join(args.out_dir, "split-shadow-2ranks-no-ghosts.png")
-    info = render(args, mhd, scenes.SPLIT_SHADOW_SCENE, "Scatterer Volume", with_ghosts)
+    info = render(mhd, scenes.SPLIT_SHADOW_SCENE, "Scatterer Volume", with_ghosts)
     check(info["ScattererRendersOwnedPartOnlyInfo"][0] == 1, "rank 0 renders only its own part")
     stats = compare.difference(with_ghosts, reference)
     check(within(stats, SPLIT_SHADOW_TOLERANCE),
           "with ghost layers (%d) the 2-rank image matches the 1-rank image: %s within %s"
           % (info["ScattererRequestedGhostLayersInfo"][0], stats, SPLIT_SHADOW_TOLERANCE))
-    render(args, mhd, scenes.SPLIT_SHADOW_SCENE, "Scatterer Volume", without, ghost_layers=0)
+    render(mhd, scenes.SPLIT_SHADOW_SCENE, "Scatterer Volume", without, ghost_layers=0)
     stats = compare.difference(without, reference)
     check(not within(stats, SPLIT_SHADOW_TOLERANCE),
           "control: without ghost layers the shadow across the border is lost: %s exceeds %s"

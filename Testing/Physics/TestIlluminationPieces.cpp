@@ -154,23 +154,28 @@ TEST(IlluminationPieces, LatticeSettingsReproduceTheDefaultLayoutWhenDimsDivide)
   EXPECT_EQ(a.bleed, b.bleed);
 }
 
-TEST(IlluminationPieces, PieceWithGhostsAsWideAsTheReachIsLitAsTheWholeVolume)
+// The piece of voxels x >= x0 (ghost layers from x0 up to kSplit) against the whole
+// volume, over the voxels the piece owns.
+Comparison pieceAgainstWhole(int x0)
 {
   const OcclusionField whole = wholeField();
   const auto templates = someTemplates();
   IlluminationSettings ws = baseSettings();
   placeOnLattice(ws, whole.dims, 0);
   const IlluminationGrid wholeGrid = computeIllumination(whole, templates, ws);
-
-  // Reach: photons within one radius, the thin-part check to 3 radii, one cache voxel.
-  const int ghosts = static_cast<int>(3 * kRadius) + kScale + 1;
-  const int x0 = kSplit - ghosts; // 17: the sheet is in the ghost layers
   const OcclusionField piece = pieceOf(whole, x0);
   IlluminationSettings ps = baseSettings();
   placeOnLattice(ps, piece.dims, x0);
   const IlluminationGrid pieceGrid = computeIllumination(piece, templates, ps);
+  return compareOwned(wholeGrid, pieceGrid, ps.cacheIndexOrigin[0]);
+}
 
-  const Comparison c = compareOwned(wholeGrid, pieceGrid, ps.cacheIndexOrigin[0]);
+TEST(IlluminationPieces, PieceWithGhostsAsWideAsTheReachIsLitAsTheWholeVolume)
+{
+  // Reach: photons within one radius, the thin-part check to 3 radii, one cache voxel.
+  const int ghosts = static_cast<int>(3 * kRadius) + kScale + 1;
+  // x0 = 17: the sheet is in the ghost layers.
+  const Comparison c = pieceAgainstWhole(kSplit - ghosts);
   ASSERT_GT(c.compared, 0);
   // The same samples on the same lattice; only float rounding of shifted
   // coordinates may move a value by one step of 255.
@@ -182,19 +187,7 @@ TEST(IlluminationPieces, PieceWithoutEnoughGhostsMissesTheShadowAcrossItsBorder)
 {
   // The control for the test above: the same comparison fails when the sheet that
   // shadows the piece's first voxels lies outside its ghost layers.
-  const OcclusionField whole = wholeField();
-  const auto templates = someTemplates();
-  IlluminationSettings ws = baseSettings();
-  placeOnLattice(ws, whole.dims, 0);
-  const IlluminationGrid wholeGrid = computeIllumination(whole, templates, ws);
-
-  const int x0 = kSplit - 2;
-  const OcclusionField piece = pieceOf(whole, x0);
-  IlluminationSettings ps = baseSettings();
-  placeOnLattice(ps, piece.dims, x0);
-  const IlluminationGrid pieceGrid = computeIllumination(piece, templates, ps);
-
-  const Comparison c = compareOwned(wholeGrid, pieceGrid, ps.cacheIndexOrigin[0]);
+  const Comparison c = pieceAgainstWhole(kSplit - 2);
   EXPECT_GT(c.maxDifference, 10);
 }
 
