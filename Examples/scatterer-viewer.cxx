@@ -4,7 +4,7 @@
 // scatterer-render and the benchmarks. Trackball camera (left drag rotates, middle or
 // shift+left pans, right drag or wheel zooms). Keys (press h in the window for the list):
 //   s shadows   b colour bleeding   t thin-part check   r boundary refraction
-//   l template blending   i illumination on/off   m cached / per-sample
+//   l template blending   i illumination on/off   m transport / per-sample
 //   + / - quality step   c reset camera   h help   q / e quit
 // While the user drags, frames are interactive: VTK's desired update rate
 // (interactor SetDesiredUpdateRate) lets the ray caster render at a reduced image
@@ -58,7 +58,7 @@ namespace
 {
 // The built-in recording (--play-events -): a rotation drag, key presses (shadows off
 // and on, per-sample mode, quality down), a zoom drag (right button), a pan
-// (shift + left), back to cached mode. Format: vtkInteractorEventRecorder stream 1.1
+// (shift + left), back to transport mode. Format: vtkInteractorEventRecorder stream 1.1
 // ("event x y modifiers keycode repeat keysym"; modifiers 1 = shift). The key events
 // are CharEvents, which the style turns into the viewer's key actions.
 const char* const BuiltInEvents = R"(# StreamVersion 1.1
@@ -105,22 +105,21 @@ KeyReleaseEvent 140 145 0 104 1 h
 struct QualityStep
 {
   const char* Name;
-  int CacheScale;
-  int CacheTemplatesPerVoxel;
+  int TransportScale;
   int PhotonCap;
   int IlluminationInterval;
 };
 const QualityStep QualitySteps[] = {
-  { "draft", 4, 1, 8, 8 },
-  { "low", 3, 2, 16, 6 },
-  { "default", 2, 4, 24, 4 },
-  { "high", 1, 8, 48, 2 },
-  { "best", 1, 16, 96, 1 },
+  { "draft", 4, 8, 8 },
+  { "low", 3, 16, 6 },
+  { "default", 2, 24, 4 },
+  { "high", 1, 48, 2 },
+  { "best", 1, 96, 1 },
 };
 const int NumberOfQualitySteps = static_cast<int>(sizeof(QualitySteps) / sizeof(QualitySteps[0]));
 
 const char* const KeyHelp = "s shadows  b bleeding  t thin  r boundary  l blending\n"
-                            "i illumination  m cached/per-sample  +/- quality\n"
+                            "i illumination  m transport/per-sample  +/- quality\n"
                             "c reset camera  h help  q quit  drag: rotate/pan/zoom";
 
 struct Options
@@ -246,14 +245,12 @@ struct Viewer
   void ApplyQuality()
   {
     const QualityStep& q = QualitySteps[this->Quality];
-    this->Mapper->SetCacheScale(q.CacheScale);
-    this->Mapper->SetCacheTemplatesPerVoxel(q.CacheTemplatesPerVoxel);
+    this->Mapper->SetTransportScale(q.TransportScale);
     if (this->Interactive)
     {
-      // Cheaper while dragging. Only settings that do not invalidate the cached
-      // illumination: in cached mode the cache (computed for the still frame) is reused
-      // as it is and only the photon evaluation interval along rays grows; in per-sample
-      // mode the photon loop is also shortened.
+      // Cheaper while dragging: the mapper itself builds the transport volume at
+      // InteractiveTransportScale on dragging frames; in per-sample mode the photon
+      // loop is also shortened and evaluated less often along rays.
       this->Mapper->SetIlluminationInterval(std::max(2 * q.IlluminationInterval, 8));
       if (this->Mapper->GetIlluminationMode() == vtkScattererTemplateVolumeMapper::PER_SAMPLE)
       {
@@ -280,15 +277,15 @@ struct Viewer
       "%.0f ms/frame (%s)\n"
       "illumination %s, %s, quality %s (+/-)\n"
       "shadow %s bleed %s thin %s boundary %s blend %s\n"
-      "cache x%d  photons %d  interval %d   h: help",
+      "transport x%d  photons %d  interval %d   h: help",
       this->LastFrameMs, this->Interactive ? "interactive" : "still",
       onOff(m->GetIlluminationEnabled()),
       m->GetIlluminationMode() == vtkScattererTemplateVolumeMapper::PER_SAMPLE ? "per-sample"
-                                                                               : "cached",
+                                                                               : "transport",
       QualitySteps[this->Quality].Name, onOff(m->GetShadowsEnabled()),
       onOff(m->GetColorBleedingEnabled()), onOff(m->GetThinPartCheckEnabled()),
       onOff(m->GetBoundaryRefractionEnabled()), onOff(m->GetTemplateBlendingEnabled()),
-      m->GetCacheScale(), m->GetPhotonCap(), m->GetIlluminationInterval());
+      m->GetTransportScale(), m->GetPhotonCap(), m->GetIlluminationInterval());
     return text;
   }
 
@@ -319,9 +316,9 @@ struct Viewer
         m->SetIlluminationEnabled(!m->GetIlluminationEnabled());
         break;
       case 'm':
-        m->SetIlluminationMode(m->GetIlluminationMode() == vtkScattererTemplateVolumeMapper::CACHED
+        m->SetIlluminationMode(m->GetIlluminationMode() == vtkScattererTemplateVolumeMapper::TRANSPORT
             ? vtkScattererTemplateVolumeMapper::PER_SAMPLE
-            : vtkScattererTemplateVolumeMapper::CACHED);
+            : vtkScattererTemplateVolumeMapper::TRANSPORT);
         this->ApplyQuality();
         break;
       case '+':

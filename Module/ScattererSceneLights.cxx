@@ -6,6 +6,8 @@
 #include "vtkRenderer.h"
 #include "vtkVolumeProperty.h"
 
+#include <cmath>
+
 namespace scatterer_scene
 {
 LightSet CollectLights(vtkRenderer* renderer, vtkVolumeProperty* property)
@@ -41,14 +43,24 @@ LightSet CollectLights(vtkRenderer* renderer, vtkVolumeProperty* property)
     const double intensity = light->GetIntensity();
     const double* diffuse = light->GetDiffuseColor();
     const double* ambient = light->GetAmbientColor();
+    const double* attenuation = light->GetAttenuationValues();
     for (int c = 0; c < 3; ++c)
     {
+      set.FocalDirection.push_back(static_cast<float>(-toLight[c]));
+      set.Attenuation.push_back(static_cast<float>(attenuation[c]));
       set.Direction.push_back(static_cast<float>(toLight[c]));
       set.Position.push_back(static_cast<float>(position[c]));
       set.Color.push_back(static_cast<float>(kd * diffuse[c] * intensity));
-      set.Ambient[c] += static_cast<float>(ka * ambient[c] * intensity);
+      set.AmbientColor.push_back(static_cast<float>(ka * ambient[c] * intensity));
+      set.Ambient[c] += set.AmbientColor.back();
     }
     set.Positional.push_back(light->GetPositional() ? 1 : 0);
+    // VTK lights a positional light's cone only below 90 degrees (as its shaders do).
+    const double cone = light->GetConeAngle();
+    set.ConeCos.push_back(light->GetPositional() && cone < 90.0
+        ? static_cast<float>(std::cos(vtkMath::RadiansFromDegrees(cone)))
+        : -2.0f);
+    set.Exponent.push_back(static_cast<float>(light->GetExponent()));
     set.AnyPositional = set.AnyPositional || light->GetPositional();
   }
   return set;

@@ -1,6 +1,7 @@
 #include "ScattererSceneMaterials.h"
 
 #include "vtkColorTransferFunction.h"
+#include "vtkDataArray.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkVolumeProperty.h"
 
@@ -181,5 +182,70 @@ std::vector<float> OpacityRatios(const MaterialSet& set)
     }
   }
   return ratios;
+}
+
+std::vector<float> MaterialTable(const MaterialSet& set, const double range[2], int size)
+{
+  std::vector<float> table(static_cast<size_t>(std::max(size, 1)), -1.0f);
+  for (size_t i = 0; i < table.size(); ++i)
+  {
+    const double v = range[0] + (range[1] - range[0]) * (i + 0.5) / table.size();
+    for (size_t m = 0; m < set.Materials.size(); ++m)
+    {
+      const scatterer::Selector& sel = set.Materials[m].Physics.selector;
+      const bool label = sel.kind == scatterer::Selector::Kind::Label;
+      const double lo = label ? sel.label - 0.5 : sel.lo, hi = label ? sel.label + 0.5 : sel.hi;
+      if (v >= lo && v <= hi)
+      {
+        table[i] = static_cast<float>(m);
+        break;
+      }
+    }
+  }
+  return table;
+}
+
+Unassigned CountUnassigned(vtkDataArray* scalars, const MaterialSet& set,
+  vtkVolumeProperty* property, const double dataRange[2])
+{
+  Unassigned result;
+  vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
+  const int tableSize = 4096;
+  std::vector<char> visible(tableSize);
+  const double lo = dataRange[0], span = dataRange[1] - dataRange[0];
+  for (int i = 0; i < tableSize; ++i)
+  {
+    visible[i] = opacity->GetValue(lo + span * i / (tableSize - 1.0)) > kVisible;
+  }
+  const vtkIdType n = scalars->GetNumberOfTuples();
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const double v = scalars->GetComponent(i, 0);
+    if (!std::isfinite(v))
+    {
+      continue;
+    }
+    const int bin = span > 0.0
+      ? std::min(tableSize - 1, std::max(0, static_cast<int>(std::lround((v - lo) / span * (tableSize - 1)))))
+      : 0;
+    if (!visible[bin])
+    {
+      continue;
+    }
+    bool assigned = false;
+    for (const auto& m : set.Materials)
+    {
+      assigned = assigned || m.Physics.selector.matches(v);
+    }
+    if (!assigned)
+    {
+      if (result.Count == 0)
+      {
+        result.Example = v;
+      }
+      ++result.Count;
+    }
+  }
+  return result;
 }
 }

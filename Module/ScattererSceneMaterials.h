@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+class vtkDataArray;
 class vtkVolumeProperty;
 
 namespace scatterer_scene
@@ -53,6 +54,30 @@ constexpr int kMaxMaterials = 8;
  */
 MaterialSet BuildMaterials(const std::vector<RequestedMaterial>& requested,
   vtkVolumeProperty* property, const double dataRange[2], const double derivationRange[2]);
+
+/**
+ * The material of each entry of a table over the scalar range [range[0], range[1]]
+ * (entry i covers the normalised scalar [i, i + 1) / size and holds the material of
+ * its centre value; -1 for none; labels match within 0.5 of their id). The
+ * transport volume looks materials up here, in the volume texture's own
+ * normalisation, so a degenerate range (one value) still finds its material.
+ */
+std::vector<float> MaterialTable(const MaterialSet& set, const double range[2], int size);
+
+/** Visible voxels (opacity above zero) that belong to no material, and one such value. */
+struct Unassigned
+{
+  long long Count = 0;
+  double Example = 0.0;
+};
+
+/**
+ * Scans @p scalars (first component) for visible values that none of @p set's
+ * materials selects; visibility from @p property's opacity transfer function,
+ * tabulated over @p dataRange. Read-only: no copy of the volume is made.
+ */
+Unassigned CountUnassigned(vtkDataArray* scalars, const MaterialSet& set,
+  vtkVolumeProperty* property, const double dataRange[2]);
 
 /** Speed ratios n_m / n_k (row m = sample material) for the shader, row-major. */
 std::vector<float> SpeedRatios(const MaterialSet& set);

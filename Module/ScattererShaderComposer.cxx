@@ -15,13 +15,13 @@ bool Features::operator==(const Features& o) const
   return this->Lights == o.Lights && this->Materials == o.Materials && this->Shadow == o.Shadow &&
     this->Thin == o.Thin && this->Bleed == o.Bleed && this->Boundary == o.Boundary &&
     this->Positional == o.Positional && this->Blend2 == o.Blend2 && this->Phong == o.Phong &&
-    this->Cached == o.Cached && this->CacheInOne == o.CacheInOne;
+    this->Transport == o.Transport;
 }
 
 std::string Features::Describe() const
 {
   std::ostringstream out;
-  out << (this->Cached ? "cached" : "per-sample") << " lights=" << this->Lights
+  out << (this->Transport ? "transport" : "per-sample") << " lights=" << this->Lights
       << " materials=" << this->Materials;
   const std::pair<bool, const char*> names[] = { { this->Shadow, "shadow" }, { this->Thin, "thin" },
     { this->Bleed, "bleed" }, { this->Boundary, "boundary" }, { this->Positional, "positional" },
@@ -107,8 +107,7 @@ std::map<std::string, bool> Flags(const Features& f)
     { "BOUNDARY", f.Boundary && f.Materials > 1 }, { "POSITIONAL", f.Positional },
     { "BLEND2", f.Blend2 }, { "PHONG", f.Phong },
     { "FETCH", f.Shadow || f.Bleed || (f.Boundary && f.Materials > 1) },
-    { "CACHED", f.Cached }, { "PERSAMPLE", !f.Cached }, { "ONETEXTURE", f.Cached && f.CacheInOne },
-    { "TWOTEXTURES", f.Cached && !f.CacheInOne } };
+    { "TRANSPORT", f.Transport }, { "PERSAMPLE", !f.Transport } };
 }
 
 std::map<std::string, std::string> Values(const Features& f)

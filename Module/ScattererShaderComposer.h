@@ -27,11 +27,8 @@ struct SCATTERERTEMPLATE_EXPORT Features
   bool Positional = false; ///< some light is positional
   bool Blend2 = false;     ///< average two templates per sample
   bool Phong = false;      ///< keep VTK's gradient shading, darkened by the visibility
-  bool Cached = true;      ///< read the CPU-computed illumination cache instead of a photon loop
-  bool CacheInOne = true;  ///< cached: one texture (white-ish light) instead of two
+  bool Transport = true;   ///< read the light transport volume instead of the per-sample photon loop
 
-  /** True when any feature looks at the volume at a photon position. */
-  bool Fetch() const { return this->Shadow || this->Bleed || this->Boundary; }
   bool operator==(const Features& o) const;
   bool operator!=(const Features& o) const { return !(*this == o); }
   /** e.g. "lights=1 materials=2 shadow thin bleed boundary". */

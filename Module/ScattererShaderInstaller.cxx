@@ -137,12 +137,11 @@ void SetIlluminationUniforms(
   u->SetUniformf(name("st_occlusionScale"), v.OcclusionScale);
   u->SetUniformf(name("st_longRange"), v.LongRange);
   u->SetUniformi(name("st_interval"), v.Interval);
-  u->SetUniform3f(name("st_unlit"), v.Unlit);
   u->SetUniform3f(name("st_toTexX"), v.ToTex[0]);
   u->SetUniform3f(name("st_toTexY"), v.ToTex[1]);
   u->SetUniform3f(name("st_toTexZ"), v.ToTex[2]);
-  u->SetUniform3f(name("st_cacheTexScale"), v.CacheTexScale);
-  u->SetUniform3f(name("st_cacheTexOffset"), v.CacheTexOffset);
+  u->SetUniform3f(name("st_transportScale"), v.TransportScale);
+  u->SetUniform3f(name("st_transportOffset"), v.TransportOffset);
   u->SetUniform3f(name("st_indexOrigin"), v.IndexOrigin);
   const scatterer_scene::LightSet& lights = *v.Lights;
   const int nl = lights.Count();

@@ -33,10 +33,9 @@ struct UniformValues
   float OcclusionScale = 1.0f;
   float LongRange = 3.0f;
   int Interval = 4;
-  float Unlit[3] = { 1, 1, 1 }; ///< cached mode: what an unoccluded sample gets
   float ToTex[3][3] = {};
-  float CacheTexScale[3] = { 1, 1, 1 }; ///< cached mode: volume -> cache texture coordinates
-  float CacheTexOffset[3] = { 0, 0, 0 };
+  float TransportScale[3] = { 1, 1, 1 }; ///< transport mode: volume -> light texture coordinates
+  float TransportOffset[3] = { 0, 0, 0 };
   float IndexOrigin[3] = { 0, 0, 0 };   ///< extent index of the first voxel (template hash)
   const scatterer_scene::LightSet* Lights = nullptr;
   std::vector<float> MaterialRanges; ///< 2 per material

@@ -1,18 +1,23 @@
 #include "vtkScattererTemplateVolumeMapper.h"
 
-#include "ScattererOcclusionField.h"
 #include "ScattererSceneLights.h"
 #include "ScattererSceneMaterials.h"
 #include "ScattererShaderComposer.h"
 #include "ScattererShaderInstaller.h"
+#include "vtkScattererTransportVolume.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
+#include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
 #include "vtkMultiVolume.h"
 #include "vtkObjectFactory.h"
+#include "vtkPlane.h"
+#include "vtkPlaneCollection.h"
+#include "vtkVolumeInputHelper.h"
+#include "vtkVolumeTexture.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderProperty.h"
 #include "vtkPiecewiseFunction.h"
@@ -25,9 +30,9 @@
 #include "vtkVolumeProperty.h"
 #include "vtkWeakPointer.h"
 
-#include <scatterer/Illumination.h>
 #include <scatterer/Pack.h>
 #include <scatterer/Template.h>
+#include <scatterer/Transport.h>
 
 #include <algorithm>
 #include <chrono>
@@ -97,16 +102,21 @@ void NormalizeExtent(std::vector<std::vector<scatterer::Template>>& templates)
   }
 }
 
+}
+
 // Everything one frame of illumination needs, decided before rendering.
-struct FramePlan
+struct vtkScattererTemplateVolumeMapper::FramePlan
 {
   scatterer_shader::Features Features;
   scatterer_scene::LightSet Lights;
   scatterer_scene::MaterialSet Materials;
-  double Radius = 1.0;
-  float ToTex[3][3] = {}; // columns: texture offset of one template radius along world x, y, z
+  vtkImageData* Image = nullptr;
+  vtkDataArray* Scalars = nullptr;
+  int CellFlag = 0;
+  double Radius = 1.0;    // template radius, world units
+  float ToTex[3][3] = {}; // per-sample mode: texture offset of one radius along world x, y, z
+  std::string Declarations, ShadingInit, Shading; // this frame's GLSL
 };
-}
 
 struct vtkScattererTemplateVolumeMapper::vtkInternals
 {
@@ -123,24 +133,15 @@ struct vtkScattererTemplateVolumeMapper::vtkInternals
   vtkSmartPointer<vtkTextureObject> Texture;
   std::string UploadedKey;
 
-  // Cached mode: the occlusion field (rebuilt when data, transfer function or
-  // materials change) and the illumination grid (also when lights or settings
-  // change), uploaded as 3D textures.
-  std::string FieldKey;
-  scatterer::OcclusionField Field;
-  std::string GridKey;
-  vtkSmartPointer<vtkTextureObject> LightCache;
-  vtkSmartPointer<vtkTextureObject> BleedCache;
-  double LastCacheMs = 0.0;
-  float Unlit[3] = { 1, 1, 1 };
-  // Volume texture coordinates -> cache texture coordinates (the cache lattice is
-  // anchored to extent index 0, so pieces of a split volume share it).
-  float CacheTexScale[3] = { 1, 1, 1 };
-  float CacheTexOffset[3] = { 0, 0, 0 };
+  double LastTransportMs = 0.0;
+  // Transport mode: the light transport volume (owns its textures and change key).
+  vtkNew<vtkScattererTransportVolume> Transport;
+  // Transport mode: each material's un-normalised templates (photons in template
+  // radii, as generated), for the in-scattering kernels.
+  std::vector<std::vector<scatterer::Template>> RawTemplates;
 
-  bool UpdateCache(vtkScattererTemplateVolumeMapper* self, vtkRenderer* ren, vtkVolume* vol,
-    vtkImageData* image, vtkDataArray* scalars, int cellFlag, const double range[2],
-    const FramePlan& plan, float unlit[3]);
+  // The data, transfer function and materials last scanned for unassigned voxels.
+  std::string UnassignedKey;
 
   // Shader texts that failed to compile here: not tried again.
   std::set<std::string> FailedShaders;
@@ -290,9 +291,14 @@ size_t vtkScattererTemplateVolumeMapper::GetTemplateTextureBytes() const
   return this->Internals->Packed.byteCount();
 }
 
-double vtkScattererTemplateVolumeMapper::GetLastCacheUpdateMilliseconds() const
+double vtkScattererTemplateVolumeMapper::GetLastTransportBuildMilliseconds() const
 {
-  return this->Internals->LastCacheMs;
+  return this->Internals->LastTransportMs;
+}
+
+vtkScattererTransportVolume* vtkScattererTemplateVolumeMapper::GetTransportVolume() const
+{
+  return this->Internals->Transport;
 }
 
 void vtkScattererTemplateVolumeMapper::SetMaterialDerivationRange(double lo, double hi)
@@ -317,14 +323,18 @@ double vtkScattererTemplateVolumeMapper::GetIlluminationReach(const double spaci
   }
   const double sx = std::abs(spacing[0]), sy = std::abs(spacing[1]), sz = std::abs(spacing[2]);
   const double radius = this->TemplateRadius > 0.0 ? this->TemplateRadius : 10.0 * (sx + sy + sz) / 3.0;
-  // Photons lie within one radius; the thin-part check marches on toward the light
-  // to LongRangeMultiple x the photon's offset (Physics/.../Illumination.h).
+  // Per sample: photons lie within one radius; the thin-part check marches on toward
+  // the light to LongRangeMultiple x the photon's offset. Transport: the kernel and
+  // the multiple-scattering average reach one radius, and a transport voxel is
+  // interpolated by its neighbours.
   const bool thin = this->ShadowsEnabled && this->ThinPartCheckEnabled;
-  const double photonReach = thin ? radius * this->LongRangeMultiple : radius;
-  // A cache voxel averages CacheScale voxels and is interpolated by its neighbours.
-  const double cacheMargin =
-    this->IlluminationMode == CACHED ? this->CacheScale * std::max({ sx, sy, sz }) : 0.0;
-  const double reach = photonReach + cacheMargin;
+  const bool transport = this->IlluminationMode == TRANSPORT;
+  const double photonReach = !transport && thin ? radius * this->LongRangeMultiple : radius;
+  const double gridMargin =
+    transport ? std::max(this->TransportScale, this->InteractiveTransportScale) *
+      std::max({ sx, sy, sz })
+              : 0.0;
+  const double reach = photonReach + gridMargin;
   return std::isfinite(reach) ? reach : 0.0;
 }
 
@@ -336,7 +346,8 @@ void vtkScattererTemplateVolumeMapper::SetExtraShaderCodeForTesting(const std::s
 void vtkScattererTemplateVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
   vtkInternals& in = *this->Internals;
-  for (auto* texture : { &in.Texture, &in.LightCache, &in.BleedCache })
+  in.Transport->ReleaseGraphicsResources(window);
+  for (auto* texture : { &in.Texture })
   {
     if (*texture)
     {
@@ -345,8 +356,12 @@ void vtkScattererTemplateVolumeMapper::ReleaseGraphicsResources(vtkWindow* windo
     }
   }
   in.UploadedKey.clear();
-  in.GridKey.clear();
   this->Superclass::ReleaseGraphicsResources(window);
+  // The released inputs keep blocks that point at their deleted textures, and
+  // PreLoadData (UpdateTransport) would not reload them: the superclass decides that
+  // inside its own GPURender. Dropped here, they are created and loaded afresh by the
+  // next PreLoadData or GPURender, as on a first frame.
+  this->AssembledInputs.clear();
 }
 
 namespace
@@ -384,64 +399,84 @@ std::string Unsupported(vtkOpenGLGPUVolumeRayCastMapper* mapper, vtkVolume* vol)
 }
 }
 
+/*
+ * GPURender: plan the frame, refresh the templates and (transport mode) the light
+ * transport volume, then render with the illumination GLSL; any stage that
+ * cannot do its part says why and the volume renders as the stock mapper would.
+ */
 void vtkScattererTemplateVolumeMapper::GPURender(vtkRenderer* ren, vtkVolume* vol)
+{
+  FramePlan plan;
+  std::string stock = this->PlanFrame(ren, vol, plan);
+  if (stock.empty())
+  {
+    stock = this->UpdateTemplates(plan);
+  }
+  if (stock.empty() && plan.Features.Transport)
+  {
+    stock = this->UpdateTransport(ren, vol, plan);
+  }
+  if (stock.empty())
+  {
+    stock = this->RenderIlluminated(ren, vol, plan);
+  }
+  if (!stock.empty())
+  {
+    this->RenderStock(ren, vol, stock);
+  }
+}
+
+void vtkScattererTemplateVolumeMapper::RenderStock(
+  vtkRenderer* ren, vtkVolume* vol, const std::string& reason)
+{
+  this->Internals->LastFeatures = "stock: " + reason;
+  this->Internals->LastTransportMs = 0.0;
+  scatterer_shader::RemoveIllumination(vol);
+  this->Superclass::GPURender(ren, vol);
+}
+
+std::string vtkScattererTemplateVolumeMapper::PlanFrame(
+  vtkRenderer* ren, vtkVolume* vol, FramePlan& plan)
 {
   vtkInternals& in = *this->Internals;
   if (!this->IlluminationEnabled)
   {
-    in.LastFeatures = "stock: illumination off";
-    scatterer_shader::RemoveIllumination(vol);
-    this->Superclass::GPURender(ren, vol);
-    return;
+    return "illumination off";
   }
-
   auto warnOnce = [&](const std::string& what) {
     if (in.Warned.insert(what).second)
     {
       vtkWarningMacro(<< what);
     }
   };
-  auto renderStock = [&](const std::string& reason) {
-    in.LastFeatures = "stock: " + reason;
-    scatterer_shader::RemoveIllumination(vol);
-    this->Superclass::GPURender(ren, vol);
-  };
-
   const std::string unsupported = Unsupported(this, vol);
   if (!unsupported.empty())
   {
     warnOnce("Scatterer-template illumination does not apply to " + unsupported +
       "; this volume renders as vtkOpenGLGPUVolumeRayCastMapper would.");
-    renderStock(unsupported);
-    return;
+    return unsupported;
   }
-  vtkImageData* image = vtkImageData::SafeDownCast(this->GetInput());
-  int cellFlag = 0;
-  vtkDataArray* scalars = image ? vtkAbstractMapper::GetScalars(image, this->ScalarMode,
-                                    this->ArrayAccessMode, this->ArrayId, this->ArrayName, cellFlag)
-                                : nullptr;
-  if (!scalars)
+  plan.Image = vtkImageData::SafeDownCast(this->GetInput());
+  plan.Scalars = plan.Image ? vtkAbstractMapper::GetScalars(plan.Image, this->ScalarMode,
+                                this->ArrayAccessMode, this->ArrayId, this->ArrayName, plan.CellFlag)
+                            : nullptr;
+  if (!plan.Scalars)
   {
-    renderStock("no scalars");
-    return;
+    return "no scalars";
   }
-  if (scalars->GetNumberOfComponents() != 1)
+  if (plan.Scalars->GetNumberOfComponents() != 1)
   {
     warnOnce("Scatterer-template illumination needs single-component scalars (intensities or "
              "a label map); these have " +
-      std::to_string(scalars->GetNumberOfComponents()) +
+      std::to_string(plan.Scalars->GetNumberOfComponents()) +
       " components, so this volume renders as vtkOpenGLGPUVolumeRayCastMapper would.");
-    renderStock("multi-component scalars");
-    return;
+    return "multi-component scalars";
   }
-
-  FramePlan plan;
   vtkVolumeProperty* property = vol->GetProperty();
   plan.Lights = scatterer_scene::CollectLights(ren, property);
   if (plan.Lights.Count() == 0)
   {
-    renderStock("no light is switched on");
-    return;
+    return "no light is switched on";
   }
   if (plan.Lights.Skipped > 0)
   {
@@ -450,6 +485,7 @@ void vtkScattererTemplateVolumeMapper::GPURender(vtkRenderer* ren, vtkVolume* vo
   }
 
   // Template radius and the world -> texture mapping of photon offsets.
+  vtkImageData* image = plan.Image;
   double spacing[3];
   int dims[3];
   image->GetSpacing(spacing);
@@ -470,8 +506,7 @@ void vtkScattererTemplateVolumeMapper::GPURender(vtkRenderer* ren, vtkVolume* vo
   {
     warnOnce("Scatterer-template illumination needs a positive, finite voxel spacing or "
              "TemplateRadius; this volume renders as vtkOpenGLGPUVolumeRayCastMapper would.");
-    renderStock("degenerate spacing");
-    return;
+    return "degenerate spacing";
   }
   {
     vtkNew<vtkMatrix4x4> inverse;
@@ -482,7 +517,7 @@ void vtkScattererTemplateVolumeMapper::GPURender(vtkRenderer* ren, vtkVolume* vo
       {
         // data offset of one template radius along world `axis`, then texels -> [0,1]
         const double data = inverse->GetElement(row, axis) * plan.Radius;
-        const int texels = std::max(1, cellFlag ? dims[row] - 1 : dims[row]);
+        const int texels = std::max(1, plan.CellFlag ? dims[row] - 1 : dims[row]);
         const double tex = data / (spacing[row] * texels);
         plan.ToTex[axis][row] = std::isfinite(tex) ? static_cast<float>(tex) : 0.0f;
       }
@@ -490,31 +525,53 @@ void vtkScattererTemplateVolumeMapper::GPURender(vtkRenderer* ren, vtkVolume* vo
   }
 
   double range[2];
-  scalars->GetFiniteRange(range, 0);
+  plan.Scalars->GetFiniteRange(range, 0);
   // Materials are derived over the derivation range when one is set (a piece of a
-  // split volume: the whole volume's range); the occlusion field's opacity table
-  // spans it too, so every piece classifies a scalar exactly as the whole does.
-  const bool derivationSet = this->MaterialDerivationRange[0] <= this->MaterialDerivationRange[1];
+  // split volume: the whole volume's range), so every piece derives the same ones.
   double derivation[2] = { range[0], range[1] };
-  double fieldRange[2] = { range[0], range[1] };
-  if (derivationSet)
+  if (this->MaterialDerivationRange[0] <= this->MaterialDerivationRange[1])
   {
     derivation[0] = this->MaterialDerivationRange[0];
     derivation[1] = this->MaterialDerivationRange[1];
-    fieldRange[0] = std::min(range[0], derivation[0]);
-    fieldRange[1] = std::max(range[1], derivation[1]);
   }
   plan.Materials = scatterer_scene::BuildMaterials(in.Requested, property, range, derivation);
   in.ActiveMaterials = static_cast<int>(plan.Materials.Materials.size());
   if (plan.Materials.Materials.empty())
   {
-    renderStock("no material: the opacity transfer function is below 1e-4 everywhere");
-    return;
+    return "no material: the opacity transfer function is below 1e-4 everywhere";
   }
   if (plan.Materials.Dropped > 0)
   {
     warnOnce("Scatterer-template illumination handles 8 materials; " +
       std::to_string(plan.Materials.Dropped) + " more stay unlit.");
+  }
+  if (!in.Requested.empty())
+  {
+    // Visible voxels that no requested material selects: scanned once per change of
+    // the data, the transfer function or the materials.
+    std::ostringstream key;
+    key.precision(17);
+    key << plan.Scalars << '|' << plan.Scalars->GetMTime() << '|'
+        << property->GetScalarOpacity(0)->GetMTime() << '|' << range[0] << ',' << range[1];
+    for (const auto& m : plan.Materials.Materials)
+    {
+      key << '|' << m.Physics.selector.lo << ',' << m.Physics.selector.hi << ','
+          << m.Physics.selector.label;
+    }
+    if (key.str() != in.UnassignedKey)
+    {
+      in.UnassignedKey = key.str();
+      const auto unassigned =
+        scatterer_scene::CountUnassigned(plan.Scalars, plan.Materials, property, range);
+      if (unassigned.Count > 0)
+      {
+        std::ostringstream what;
+        what << unassigned.Count << " visible voxels (e.g. scalar value " << unassigned.Example
+             << ") belong to none of the requested materials: they are drawn and cast shadows, "
+                "but receive light without in-scattering (add a material for them to fix this).";
+        warnOnce(what.str());
+      }
+    }
   }
 
   // Which code paths this scene needs.
@@ -537,91 +594,256 @@ void vtkScattererTemplateVolumeMapper::GPURender(vtkRenderer* ren, vtkVolume* vo
   f.Positional = plan.Lights.AnyPositional;
   f.Blend2 = this->TemplateBlendingEnabled;
   f.Phong = property->GetShade() != 0;
-  f.Cached = this->IlluminationMode == CACHED;
-  {
-    scatterer::IlluminationSettings probe;
-    probe.ambient = glm::vec3(plan.Lights.Ambient[0], plan.Lights.Ambient[1], plan.Lights.Ambient[2]);
-    for (int l = 0; l < plan.Lights.Count(); ++l)
-    {
-      scatterer::GridLight g;
-      g.color = glm::vec3(plan.Lights.Color[3 * l], plan.Lights.Color[3 * l + 1], plan.Lights.Color[3 * l + 2]);
-      probe.lights.push_back(g);
-    }
-    f.CacheInOne = scatterer::singleChromaticity(probe);
-  }
+  f.Transport = this->IlluminationMode == TRANSPORT;
   if (automatic && !f.Shadow && !f.Bleed && !f.Boundary)
   {
-    renderStock("no illumination effect is switched on");
-    return;
+    return "no illumination effect is switched on";
+  }
+  plan.Declarations = scatterer_shader::IlluminationDeclarations(f) + in.ExtraGLSL;
+  plan.ShadingInit = scatterer_shader::ShadingInitialization(f);
+  plan.Shading = scatterer_shader::ShadingImplementation(f);
+  if (in.FailedShaders.count(plan.Declarations + plan.ShadingInit + plan.Shading))
+  {
+    return "the illumination shader failed to compile here";
+  }
+  return "";
+}
+
+std::string vtkScattererTemplateVolumeMapper::UpdateTemplates(const FramePlan& plan)
+{
+  vtkInternals& in = *this->Internals;
+  std::ostringstream key;
+  key.precision(17);
+  key << this->TemplatesPerMaterial << '|' << this->GeneratorThreshold << '|' << this->PhotonCap;
+  for (const auto& m : plan.Materials.Materials)
+  {
+    key << '|' << m.Physics.opacity << ',' << m.Physics.refractiveIndex;
+  }
+  if (key.str() == in.TemplateKey)
+  {
+    return "";
+  }
+  std::vector<scatterer::Material> physics;
+  for (const auto& m : plan.Materials.Materials)
+  {
+    physics.push_back(m.Physics);
+  }
+  scatterer::GeneratorSettings settings;
+  settings.templatesPerMaterial = this->TemplatesPerMaterial;
+  settings.threshold = this->GeneratorThreshold;
+  try
+  {
+    in.RawTemplates = scatterer::generateAllTemplates(physics, settings);
+    in.Templates = in.RawTemplates;
+    NormalizeExtent(in.Templates);
+    in.Packed = scatterer::packTemplates(in.Templates, this->PhotonCap);
+  }
+  catch (const std::exception& e)
+  {
+    const std::string what = std::string("Scatterer templates could not be generated (") +
+      e.what() + "); this volume renders as vtkOpenGLGPUVolumeRayCastMapper would.";
+    if (in.Warned.insert(what).second)
+    {
+      vtkWarningMacro(<< what);
+    }
+    return "template generation failed";
+  }
+  in.TemplateKey = key.str();
+  return "";
+}
+
+std::string vtkScattererTemplateVolumeMapper::UpdateTransport(
+  vtkRenderer* ren, vtkVolume* vol, const FramePlan& plan)
+{
+  vtkInternals& in = *this->Internals;
+  auto warnOnce = [&](const std::string& what) {
+    if (in.Warned.insert(what).second)
+    {
+      vtkWarningMacro(<< what);
+    }
+  };
+  // The ray caster's own scalar texture: loaded now if this is the first frame.
+  if (!this->PreLoadData(ren, vol) || this->AssembledInputs.empty())
+  {
+    return "the volume could not be loaded into a texture";
+  }
+  vtkVolumeTexture* volumeTexture = this->AssembledInputs.begin()->second.Texture;
+  if (!volumeTexture || volumeTexture->GetPartitions()[0] * volumeTexture->GetPartitions()[1] *
+        volumeTexture->GetPartitions()[2] != 1)
+  {
+    warnOnce("Scatterer-template illumination does not apply to a partitioned volume (one "
+             "3D texture per block); this volume renders as vtkOpenGLGPUVolumeRayCastMapper would.");
+    return "a partitioned volume";
+  }
+  vtkVolumeTexture::VolumeBlock* block = volumeTexture->GetCurrentBlock();
+  if (!block || !block->TextureObject)
+  {
+    return "the volume texture is not loaded";
   }
 
-  const std::string declarations =
-    scatterer_shader::IlluminationDeclarations(f) + in.ExtraGLSL;
-  const std::string shading = scatterer_shader::ShadingInitialization(f) +
-    scatterer_shader::ShadingImplementation(f);
-  if (in.FailedShaders.count(declarations + shading))
+  vtkScattererTransportVolume::Inputs t;
+  t.Volume = block->TextureObject;
+  // Scale and bias as the ray caster applies them (64-bit types come pre-scaled).
+  t.ScalarScale = volumeTexture->HandleLargeDataTypes ? 1.0f : volumeTexture->Scale[0];
+  t.ScalarBias = volumeTexture->HandleLargeDataTypes ? 0.0f : volumeTexture->Bias[0];
+  t.VolumeUploadTime = volumeTexture->UploadTime.GetMTime();
+  // Texture coordinate -> structured index -> physical (origin, spacing, direction)
+  // -> world (the volume's matrix). Texel centre (i + 0.5) / N holds data point i
+  // (cell data: the centre of cell i), so distances are the data's own.
+  vtkNew<vtkMatrix4x4> texToIndex, indexToDataset, texToDataset, texToWorld;
+  int extent[6];
+  plan.Image->GetExtent(extent);
+  const unsigned int texels[3] = { block->TextureObject->GetWidth(),
+    block->TextureObject->GetHeight(), block->TextureObject->GetDepth() };
+  for (int a = 0; a < 3; ++a)
   {
-    renderStock("the illumination shader failed to compile here");
-    return;
+    texToIndex->SetElement(a, a, texels[a]);
+    texToIndex->SetElement(a, 3, extent[2 * a] - 0.5 + (plan.CellFlag ? 0.5 : 0.0));
+    t.IndexOrigin[a] = extent[2 * a];
   }
+  plan.Image->ComputeIndexToPhysicalMatrix(
+    plan.Image->GetOrigin(), plan.Image->GetSpacing(), plan.Image->GetDirectionMatrix()->GetData(),
+    indexToDataset->GetData());
+  vtkMatrix4x4::Multiply4x4(indexToDataset, texToIndex, texToDataset);
+  vtkMatrix4x4::Multiply4x4(vol->GetMatrix(), texToDataset, texToWorld);
+  for (int i = 0; i < 16; ++i)
+  {
+    t.TexToWorld[i] = texToWorld->GetElement(i / 4, i % 4);
+    t.TexToDataset[i] = texToDataset->GetElement(i / 4, i % 4);
+  }
+  // The medium over the table coordinate (VTK's tables span the scalar range): albedo
+  // from the colour transfer function, extinction from the opacity transfer function.
+  vtkVolumeProperty* property = vol->GetProperty();
+  vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
+  const double unit = property->GetScalarOpacityUnitDistance(0) > 0.0
+    ? property->GetScalarOpacityUnitDistance(0)
+    : 1.0;
+  const double lo = volumeTexture->ScalarRange[0][0], hi = volumeTexture->ScalarRange[0][1];
+  const int tableSize = 4096;
+  t.Medium.resize(4 * tableSize);
+  for (int i = 0; i < tableSize; ++i)
+  {
+    const double value = lo + (hi - lo) * i / (tableSize - 1.0);
+    double rgb[3] = { 1.0, 1.0, 1.0 };
+    if (property->GetColorChannels(0) == 1)
+    {
+      rgb[0] = rgb[1] = rgb[2] = property->GetGrayTransferFunction(0)->GetValue(value);
+    }
+    else
+    {
+      property->GetRGBTransferFunction(0)->GetColor(value, rgb);
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      t.Medium[4 * i + c] = static_cast<float>(std::min(std::max(rgb[c], 0.0), 1.0));
+    }
+    t.Medium[4 * i + 3] =
+      static_cast<float>(scatterer::extinctionFromOpacity(opacity->GetValue(value), unit));
+  }
+  t.ExtinctionScale = plan.Features.Shadow ? static_cast<float>(this->OcclusionStrength) : 0.0f;
+  if (vtkPlaneCollection* planes = this->GetClippingPlanes())
+  {
+    for (int p = 0; p < planes->GetNumberOfItems() && p < 6; ++p)
+    {
+      vtkPlane* plane = planes->GetItem(p);
+      double n[3], o[3];
+      plane->GetNormal(n);
+      plane->GetOrigin(o);
+      t.ClipPlanes.insert(t.ClipPlanes.end(), { static_cast<float>(n[0]),
+        static_cast<float>(n[1]), static_cast<float>(n[2]),
+        static_cast<float>(-(n[0] * o[0] + n[1] * o[1] + n[2] * o[2])) });
+    }
+  }
+  t.Cropping = this->GetCropping() != 0;
+  t.CropFlags = this->GetCroppingRegionFlags();
+  for (int a = 0; a < 3; ++a)
+  {
+    t.CropMin[a] = static_cast<float>(this->CroppingRegionPlanes[2 * a]);
+    t.CropMax[a] = static_cast<float>(this->CroppingRegionPlanes[2 * a + 1]);
+  }
+  const bool interactive = vol->GetAllocatedRenderTime() < 1.0;
+  t.Downsample = interactive ? this->InteractiveTransportScale : this->TransportScale;
+  const auto& lights = plan.Lights;
+  for (int l = 0; l < lights.Count(); ++l)
+  {
+    vtkScattererTransportVolume::Light light;
+    for (int c = 0; c < 3; ++c)
+    {
+      light.Toward[c] = lights.Direction[3 * l + c];
+      light.Position[c] = lights.Position[3 * l + c];
+      light.Color[c] = lights.Color[3 * l + c];
+      light.Ambient[c] = lights.AmbientColor[3 * l + c];
+      light.FocalDirection[c] = lights.FocalDirection[3 * l + c];
+      light.Attenuation[c] = lights.Attenuation[3 * l + c];
+    }
+    light.Positional = lights.Positional[l] != 0;
+    light.ConeCos = lights.ConeCos[l];
+    light.Exponent = lights.Exponent[l];
+    t.Lights.push_back(light);
+  }
+  // Materials and their kernels: the merged templates, in the material's mean free
+  // paths (scatterer/Transport.h), at most one template radius.
+  const auto& mats = plan.Materials.Materials;
+  t.KernelWidth = std::max(1, this->PhotonCap);
+  for (size_t m = 0; m < mats.size(); ++m)
+  {
+    const auto& material = mats[m];
+    const glm::vec3 c = material.Physics.diffuse;
+    t.MaterialColors.insert(t.MaterialColors.end(), { c.x, c.y, c.z });
+    const double sigma = scatterer::extinctionFromOpacity(material.OpacityPerUnit, unit);
+    std::vector<scatterer::KernelPhoton> kernel;
+    if (m < in.RawTemplates.size())
+    {
+      kernel = scatterer::mergedKernel(in.RawTemplates[m], t.KernelWidth,
+        scatterer::kernelRadius(material.Physics, sigma, 0.0, plan.Radius));
+    }
+    for (int k = 0; k < t.KernelWidth; ++k)
+    {
+      const bool has = k < static_cast<int>(kernel.size());
+      t.Kernels.insert(t.Kernels.end(),
+        { has ? kernel[k].offset.x : 0.0f, has ? kernel[k].offset.y : 0.0f,
+          has ? kernel[k].offset.z : 0.0f, has ? kernel[k].weight : 0.0f });
+    }
+  }
+  const double tableRange[2] = { lo, hi };
+  t.MaterialTable = scatterer_scene::MaterialTable(plan.Materials, tableRange, 4096);
+  t.SpeedRatios = scatterer_scene::SpeedRatios(plan.Materials);
+  t.OpacityRatios = scatterer_scene::OpacityRatios(plan.Materials);
+  t.Bleed = plan.Features.Bleed;
+  t.Boundary = plan.Features.Boundary;
+  t.MultipleScattering = static_cast<float>(this->MultipleScattering);
+  t.AmbientRadius = static_cast<float>(plan.Radius);
 
-  // Templates: regenerate when materials or generator settings change.
+  auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  std::string why;
+  if (!in.Transport->Update(renWin, t, why))
   {
-    std::ostringstream key;
-    key.precision(17);
-    key << this->TemplatesPerMaterial << '|' << this->GeneratorThreshold << '|' << this->PhotonCap;
-    for (const auto& m : mats)
-    {
-      key << '|' << m.Physics.opacity << ',' << m.Physics.refractiveIndex;
-    }
-    if (key.str() != in.TemplateKey)
-    {
-      std::vector<scatterer::Material> physics;
-      for (const auto& m : mats)
-      {
-        physics.push_back(m.Physics);
-      }
-      scatterer::GeneratorSettings settings;
-      settings.templatesPerMaterial = this->TemplatesPerMaterial;
-      settings.threshold = this->GeneratorThreshold;
-      try
-      {
-        in.Templates = scatterer::generateAllTemplates(physics, settings);
-        NormalizeExtent(in.Templates);
-        in.Packed = scatterer::packTemplates(in.Templates, this->PhotonCap);
-      }
-      catch (const std::exception& e)
-      {
-        warnOnce(std::string("Scatterer templates could not be generated (") + e.what() +
-          "); this volume renders as vtkOpenGLGPUVolumeRayCastMapper would.");
-        renderStock("template generation failed");
-        return;
-      }
-      in.TemplateKey = key.str();
-    }
+    vtkErrorMacro("The light transport volume could not be built: " << why
+      << "; this volume renders as vtkOpenGLGPUVolumeRayCastMapper would.");
+    return "the light transport volume could not be built";
   }
+  in.LastTransportMs = in.Transport->GetLastBuildMilliseconds();
+  return "";
+}
+
+std::string vtkScattererTemplateVolumeMapper::RenderIlluminated(
+  vtkRenderer* ren, vtkVolume* vol, const FramePlan& plan)
+{
+  vtkInternals& in = *this->Internals;
+  const scatterer_shader::Features& f = plan.Features;
   auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
   std::vector<scatterer_shader::Sampler> samplers;
   std::vector<vtkTextureObject*> bound;
-  float unlit[3] = { 1, 1, 1 };
-  in.LastCacheMs = 0.0;
-  if (f.Cached)
+  scatterer_shader::UniformValues u;
+  if (f.Transport)
   {
-    if (!in.UpdateCache(this, ren, vol, image, scalars, cellFlag, fieldRange, plan, unlit))
-    {
-      renderStock("the illumination cache could not be computed");
-      return;
-    }
-    samplers.push_back({ "st_lightCache", "sampler3D" });
-    bound.push_back(in.LightCache);
-    if (f.Bleed && !f.CacheInOne)
-    {
-      samplers.push_back({ "st_bleedCache", "sampler3D" });
-      bound.push_back(in.BleedCache);
-    }
+    samplers.push_back({ "st_transport", "sampler3D" });
+    bound.push_back(in.Transport->GetLightTexture());
+    in.Transport->GetTextureTransform(u.TransportScale, u.TransportOffset);
   }
   else
   {
+    in.LastTransportMs = 0.0;
     if (!in.Texture || in.Texture->GetContext() != renWin || in.UploadedKey != in.TemplateKey)
     {
       if (!in.Texture || in.Texture->GetContext() != renWin)
@@ -642,10 +864,8 @@ void vtkScattererTemplateVolumeMapper::GPURender(vtkRenderer* ren, vtkVolume* vo
   }
 
   // Shader text and uniforms.
-  scatterer_shader::InstallIllumination(vol, declarations,
-    scatterer_shader::ShadingInitialization(f), scatterer_shader::ShadingImplementation(f),
-    samplers);
-  scatterer_shader::UniformValues u;
+  scatterer_shader::InstallIllumination(
+    vol, plan.Declarations, plan.ShadingInit, plan.Shading, samplers);
   u.TemplatesPerMaterial = this->TemplatesPerMaterial;
   u.PhotonCount = std::min(this->PhotonCap, in.Packed.width);
   u.PhotonThreshold = static_cast<float>(this->PhotonThreshold);
@@ -653,23 +873,17 @@ void vtkScattererTemplateVolumeMapper::GPURender(vtkRenderer* ren, vtkVolume* vo
   u.LongRange = static_cast<float>(this->LongRangeMultiple);
   u.Interval = this->IlluminationInterval;
   int extent[6];
-  image->GetExtent(extent);
+  plan.Image->GetExtent(extent);
   for (int c = 0; c < 3; ++c)
   {
-    u.Unlit[c] = unlit[c];
-    u.CacheTexScale[c] = in.CacheTexScale[c];
-    u.CacheTexOffset[c] = in.CacheTexOffset[c];
     u.IndexOrigin[c] = static_cast<float>(extent[2 * c]);
-  }
-  for (int a = 0; a < 3; ++a)
-  {
-    for (int c = 0; c < 3; ++c)
+    for (int a = 0; a < 3; ++a)
     {
-      u.ToTex[a][c] = plan.ToTex[a][c];
+      u.ToTex[c][a] = plan.ToTex[c][a];
     }
   }
   u.Lights = &plan.Lights;
-  for (const auto& m : mats)
+  for (const auto& m : plan.Materials.Materials)
   {
     u.MaterialRanges.push_back(m.Range[0]);
     u.MaterialRanges.push_back(m.Range[1]);
@@ -728,210 +942,14 @@ void vtkScattererTemplateVolumeMapper::GPURender(vtkRenderer* ren, vtkVolume* vo
   }
   if (compileFailed)
   {
-    in.FailedShaders.insert(declarations + shading);
+    in.FailedShaders.insert(plan.Declarations + plan.ShadingInit + plan.Shading);
     vtkErrorMacro("The scatterer-template illumination shader (" << f.Describe()
       << ") failed to compile on this OpenGL implementation (the compiler's message is above); "
          "this volume renders as vtkOpenGLGPUVolumeRayCastMapper would.");
-    renderStock("the illumination shader failed to compile here");
-    return;
+    return "the illumination shader failed to compile here";
   }
   in.LastFeatures = f.Describe();
-}
-
-bool vtkScattererTemplateVolumeMapper::vtkInternals::UpdateCache(
-  vtkScattererTemplateVolumeMapper* self, vtkRenderer* ren, vtkVolume* vol, vtkImageData* image,
-  vtkDataArray* scalars, int cellFlag, const double range[2], const FramePlan& plan, float unlit[3])
-{
-  const auto start = std::chrono::steady_clock::now();
-  int dims[3];
-  image->GetDimensions(dims);
-  if (cellFlag)
-  {
-    for (int& d : dims)
-    {
-      d = std::max(1, d - 1);
-    }
-  }
-  vtkVolumeProperty* property = vol->GetProperty();
-  const auto& mats = plan.Materials.Materials;
-
-  // The occlusion field: data, transfer function and materials.
-  std::ostringstream fieldKey;
-  fieldKey.precision(17);
-  fieldKey << scalars << '|' << scalars->GetMTime() << '|' << image->GetMTime() << '|'
-           << property->GetScalarOpacity(0)->GetMTime() << '|'
-           << property->GetScalarOpacityUnitDistance(0) << '|' << range[0] << ',' << range[1];
-  for (const auto& m : mats)
-  {
-    fieldKey << '|' << m.Physics.selector.lo << ',' << m.Physics.selector.hi << ','
-             << m.Physics.selector.label;
-  }
-  if (fieldKey.str() != this->FieldKey)
-  {
-    this->Field = scatterer_scene::BuildOcclusionField(scalars, dims, range, property, plan.Materials);
-    if (!this->Requested.empty())
-    {
-      const auto unassigned = scatterer_scene::CountUnassigned(scalars, this->Field);
-      if (unassigned.Count > 0)
-      {
-        std::ostringstream what;
-        what << unassigned.Count << " visible voxels (e.g. scalar value " << unassigned.Example
-             << ") belong to none of the requested materials: they are drawn and occlude, but "
-                "are lit as their nearest material (add a material for them to fix this).";
-        if (this->Warned.insert(what.str()).second)
-        {
-          vtkWarningWithObjectMacro(self, << what.str());
-        }
-      }
-    }
-    this->FieldKey = fieldKey.str();
-    this->GridKey.clear();
-  }
-
-  // The illumination grid: also lights, geometry and quality settings.
-  scatterer::IlluminationSettings s;
-  const int scale = self->CacheScale;
-  // Cache voxel G of the lattice covers extent indices [G * scale, (G + 1) * scale):
-  // anchored to index 0 rather than to this image's first voxel, so that a piece of a
-  // split volume (ParaView with MPI) places and hashes its cache voxels as the whole
-  // volume does, and pieces with enough ghost layers match a single-process render.
-  int extent[6];
-  image->GetExtent(extent);
-  auto floorDiv = [](int a, int b) { return a >= 0 ? a / b : -((-a + b - 1) / b); };
-  for (int a = 0; a < 3; ++a)
-  {
-    const int origin = extent[2 * a];
-    const int first = floorDiv(origin, scale);
-    const int last = floorDiv(origin + dims[a] - 1, scale);
-    s.cacheDims[a] = std::max(1, last - first + 1);
-    s.cacheStep[a] = static_cast<float>(scale);
-    s.cacheFirstCentre[a] = (first + 0.5f) * scale - 0.5f - origin;
-    s.cacheIndexOrigin[a] = first;
-    // texel centre (i + 0.5) / dims of the volume <-> cache voxel (x - first centre) / scale
-    const float span = static_cast<float>(scale) * s.cacheDims[a];
-    this->CacheTexScale[a] = static_cast<float>(dims[a]) / span;
-    this->CacheTexOffset[a] = (0.5f * scale - 0.5f - s.cacheFirstCentre[a]) / span;
-  }
-  double spacing[3], origin[3];
-  image->GetSpacing(spacing);
-  image->GetOrigin(origin);
-  vtkMatrix4x4* matrix = vol->GetMatrix();
-  double originWorld[4] = { origin[0], origin[1], origin[2], 1.0 };
-  if (cellFlag)
-  {
-    for (int a = 0; a < 3; ++a)
-    {
-      originWorld[a] += 0.5 * spacing[a];
-    }
-  }
-  matrix->MultiplyPoint(originWorld, originWorld);
-  s.worldOrigin = glm::vec3(originWorld[0], originWorld[1], originWorld[2]);
-  for (int c = 0; c < 3; ++c)
-  {
-    for (int r = 0; r < 3; ++r)
-    {
-      s.indexToWorld[c][r] = static_cast<float>(matrix->GetElement(r, c) * spacing[c]);
-    }
-  }
-  s.radius = static_cast<float>(plan.Radius);
-  s.occlusionStrength = static_cast<float>(self->OcclusionStrength);
-  s.longRange = static_cast<float>(self->LongRangeMultiple);
-  s.photonThreshold = static_cast<float>(self->PhotonThreshold);
-  s.photonCap = self->PhotonCap;
-  s.templatesPerEstimate = plan.Features.Blend2 ? self->TemplatesPerMaterial : self->CacheTemplatesPerVoxel;
-  s.shadow = plan.Features.Shadow;
-  s.thin = plan.Features.Shadow && plan.Features.Thin;
-  s.bleed = plan.Features.Bleed;
-  s.boundary = plan.Features.Boundary && mats.size() > 1;
-  s.packInOne = plan.Features.CacheInOne;
-  for (const auto& m : mats)
-  {
-    s.materialColors.push_back(m.Physics.diffuse);
-  }
-  s.speedRatios = scatterer_scene::SpeedRatios(plan.Materials);
-  s.opacityRatios = scatterer_scene::OpacityRatios(plan.Materials);
-  const auto& lights = plan.Lights;
-  s.ambient = glm::vec3(lights.Ambient[0], lights.Ambient[1], lights.Ambient[2]);
-  for (int l = 0; l < lights.Count(); ++l)
-  {
-    scatterer::GridLight g;
-    g.toLight = glm::vec3(lights.Direction[3 * l], lights.Direction[3 * l + 1], lights.Direction[3 * l + 2]);
-    g.position = glm::vec3(lights.Position[3 * l], lights.Position[3 * l + 1], lights.Position[3 * l + 2]);
-    g.positional = lights.Positional[l] != 0;
-    g.color = glm::vec3(lights.Color[3 * l], lights.Color[3 * l + 1], lights.Color[3 * l + 2]);
-    s.lights.push_back(g);
-  }
-  std::ostringstream gridKey;
-  gridKey.precision(9);
-  gridKey << this->FieldKey << '#' << this->TemplateKey << '#' << scale << '|' << extent[0] << ','
-          << extent[2] << ',' << extent[4] << '|' << s.radius << '|'
-          << s.occlusionStrength << '|' << s.longRange << '|' << s.photonThreshold << '|'
-          << s.photonCap << '|' << s.templatesPerEstimate << s.shadow << s.thin << s.bleed
-          << s.boundary << s.packInOne << '|' << s.ambient.x << ',' << s.ambient.y << ',' << s.ambient.z;
-  for (int i = 0; i < 16; ++i)
-  {
-    gridKey << ',' << matrix->GetElement(i / 4, i % 4);
-  }
-  for (const auto& g : s.lights)
-  {
-    gridKey << '|' << g.toLight.x << ',' << g.toLight.y << ',' << g.toLight.z << ','
-            << g.position.x << ',' << g.position.y << ',' << g.position.z << ',' << g.positional
-            << ',' << g.color.x << ',' << g.color.y << ',' << g.color.z;
-  }
-  for (const auto& c : s.materialColors)
-  {
-    gridKey << '|' << c.x << ',' << c.y << ',' << c.z;
-  }
-  auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  const bool twoTextures = s.bleed && !s.packInOne;
-  const bool contextChanged = !this->LightCache || this->LightCache->GetContext() != renWin ||
-    (twoTextures && (!this->BleedCache || this->BleedCache->GetContext() != renWin));
-  if (gridKey.str() != this->GridKey || contextChanged)
-  {
-    scatterer::IlluminationGrid grid;
-    try
-    {
-      grid = scatterer::computeIllumination(this->Field, this->Templates, s);
-    }
-    catch (const std::exception& e)
-    {
-      vtkErrorWithObjectMacro(self, "The illumination cache could not be computed: " << e.what());
-      return false;
-    }
-    auto upload = [&](vtkSmartPointer<vtkTextureObject>& texture, std::vector<std::uint8_t>& data) {
-      if (!texture || texture->GetContext() != renWin)
-      {
-        texture = vtkSmartPointer<vtkTextureObject>::New();
-        texture->SetContext(renWin);
-      }
-      texture->SetMinificationFilter(vtkTextureObject::Linear);
-      texture->SetMagnificationFilter(vtkTextureObject::Linear);
-      texture->SetWrapS(vtkTextureObject::ClampToEdge);
-      texture->SetWrapT(vtkTextureObject::ClampToEdge);
-      texture->SetWrapR(vtkTextureObject::ClampToEdge);
-      return texture->Create3DFromRaw(
-        grid.dims[0], grid.dims[1], grid.dims[2], 4, VTK_UNSIGNED_CHAR, data.data());
-    };
-    if (!upload(this->LightCache, grid.light) ||
-      (twoTextures && !upload(this->BleedCache, grid.bleed)))
-    {
-      vtkErrorWithObjectMacro(self, "The illumination cache (" << grid.dims[0] << "x"
-        << grid.dims[1] << "x" << grid.dims[2] << " RGBA8) could not be uploaded as a 3D texture.");
-      return false;
-    }
-    for (int c = 0; c < 3; ++c)
-    {
-      this->Unlit[c] = grid.unlit[c];
-    }
-    this->GridKey = gridKey.str();
-    this->LastCacheMs =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  }
-  for (int c = 0; c < 3; ++c)
-  {
-    unlit[c] = this->Unlit[c];
-  }
-  return true;
+  return "";
 }
 
 void vtkScattererTemplateVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)

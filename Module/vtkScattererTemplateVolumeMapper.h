@@ -3,33 +3,42 @@
  * @brief   GPU ray-cast volume mapper with scatterer-template global illumination.
  *
  * A drop-in replacement for vtkOpenGLGPUVolumeRayCastMapper that lights
- * volumes with soft shadows, ambient occlusion, colour bleeding between
- * materials and light that stops at thin parts, after Lee, Kwon and Shin (2016):
- * per material a few precomputed photon templates (see Module/Physics) are
- * tested for occlusion at every composite sample.
+ * volumes physically: global shadows through the whole volume, light scattered
+ * inside materials (the scatterer templates of Lee, Kwon and Shin 2016 used as
+ * the in-scattering kernel), colour bleeding between materials and multiple
+ * scattering into shadowed regions.
+ *
+ * Default (IlluminationMode Transport): a light transport volume is built on the
+ * GPU from the ray caster's own volume texture whenever the data, transfer
+ * function, lights or settings change (vtkScattererTransportVolume: a
+ * Beer-Lambert sweep per light, then a template gather), and every ray sample
+ * reads it once. PerSample: the paper's local photon test in the shader at every
+ * ray sample (occluders within the template radius only).
  *
  * The work is injected into the stock ray caster as GLSL replacements on the
  * volume's shader property (Module/Shaders), so blend modes, cropping,
- * clipping planes, opaque geometry and several volumes keep working.
+ * clipping planes, opaque geometry and several volumes keep working; removed
+ * (cropped or clipped) material neither shows nor casts shadow.
  * With IlluminationEnabled off the mapper renders pixel-identically to
  * vtkOpenGLGPUVolumeRayCastMapper (tested).
  *
- * What the shader carries is chosen from the scene each frame: one material
- * means no boundary code, no switched-on light means no illumination code, an
- * effect switched off has no code at all (ShaderPathSelection Automatic). The
- * shader is rebuilt only when that GLSL text changes.
+ * What the shader carries is chosen from the scene each frame (see
+ * GetLastShaderFeatures); an effect switched off has no code at all
+ * (ShaderPathSelection Automatic). The shader is rebuilt only when that GLSL
+ * text changes.
  *
  * Illumination applies to composite blending of single-component scalars
- * (intensities or label maps). Other blend modes, multi-component data, masks,
- * multi-volumes, rectilinear grids, depth-pass and 2D transfer functions render
- * as the stock mapper does, with one warning if illumination was asked for.
+ * (intensities or label maps) in one block. Other blend modes, multi-component
+ * data, masks, multi-volumes, partitioned volumes, rectilinear grids,
+ * depth-pass and 2D transfer functions render as the stock mapper does, with
+ * one warning if illumination was asked for.
  *
- * Parameters that only feed shader uniforms or the template texture
- * (everything below except materials) do not call Modified(): the stock mapper
- * rebuilds its shader whenever the mapper's MTime moves, and a slider drag must
- * not recompile. They bump GetIlluminationMTime() instead and take effect on
- * the next render. NaN values are rejected with an error; values outside a
- * parameter's range are clamped with a warning.
+ * Parameters that only feed shader uniforms or the transport volume do not
+ * call Modified(): the stock mapper rebuilds its shader whenever the mapper's
+ * MTime moves, and a slider drag must not recompile. They bump
+ * GetIlluminationMTime() instead and take effect on the next render. NaN values
+ * are rejected with an error; values outside a parameter's range are clamped
+ * with a warning.
  *
  * @sa vtkOpenGLGPUVolumeRayCastMapper
  */
@@ -83,6 +92,8 @@
   vtkGetMacro(name, bool);                                                                         \
   vtkBooleanMacro(name, bool)
 
+class vtkScattererTransportVolume;
+
 class SCATTERERTEMPLATE_EXPORT vtkScattererTemplateVolumeMapper
   : public vtkOpenGLGPUVolumeRayCastMapper
 {
@@ -112,51 +123,63 @@ public:
 
   enum IlluminationModeType
   {
-    CACHED = 0,    ///< photon test on the CPU at a coarse grid, read by every sample (default)
-    PER_SAMPLE = 1 ///< photon test in the fragment shader at every ray sample (the paper's loop)
+    TRANSPORT = 0, ///< light transport volume built on the GPU, read by every sample (default)
+    PER_SAMPLE = 1 ///< the paper's local photon test in the fragment shader at every ray sample
   };
   ///@{
   /**
-   * Cached (default): the photon test runs on the CPU (all cores) at the
-   * voxels of a grid CacheScale times coarser than the volume, only when the
+   * Transport (default): global shadows, template in-scattering and multiple
+   * scattering from a light transport volume rebuilt on the GPU only when the
    * volume, transfer function, lights or settings change; each ray sample then
-   * costs one extra texture read, so orbiting the camera under scene lights is
-   * nearly free. PerSample: the photon loop runs in the shader at every
-   * sample, with the paper's early exit on ray transmittance x photon
-   * intensity; exact at every sample, but the loop runs every frame.
+   * costs one extra texture read. PerSample: the paper's photon loop in the
+   * shader at every sample, with its early exit on ray transmittance x photon
+   * intensity; it sees occluders within the template radius only (times
+   * LongRangeMultiple along the thin-part check).
    */
-  vtkScattererSetClampMacro(IlluminationMode, int, CACHED, PER_SAMPLE);
+  vtkScattererSetClampMacro(IlluminationMode, int, TRANSPORT, PER_SAMPLE);
   vtkGetMacro(IlluminationMode, int);
-  void SetIlluminationModeToCached() { this->SetIlluminationMode(CACHED); }
+  void SetIlluminationModeToTransport() { this->SetIlluminationMode(TRANSPORT); }
   void SetIlluminationModeToPerSample() { this->SetIlluminationMode(PER_SAMPLE); }
   ///@}
 
   ///@{
-  /** Cached mode: cache voxels per volume voxel along each axis (default 2). */
-  vtkScattererSetClampMacro(CacheScale, int, 1, 8);
-  vtkGetMacro(CacheScale, int);
+  /**
+   * Transport mode: volume voxels per transport-volume voxel along each axis
+   * for still frames (default 2: 1/8 of the voxels), and for interactive frames
+   * (the volume's allocated render time below 1 s, as VTK's interactor asks
+   * while the user drags; default 4). Smaller is sharper and slower.
+   */
+  vtkScattererSetClampMacro(TransportScale, int, 1, 8);
+  vtkGetMacro(TransportScale, int);
+  vtkScattererSetClampMacro(InteractiveTransportScale, int, 1, 8);
+  vtkGetMacro(InteractiveTransportScale, int);
   ///@}
 
   ///@{
   /**
-   * Cached mode: distinct templates averaged per cache voxel (default 4;
-   * TemplateBlendingEnabled averages all of the material's templates). More
-   * templates mean less grain and a proportionally longer cache update.
+   * Transport mode: strength of the multiple-scattering term (light scattered
+   * more than once, which reaches shadowed regions; docs/model.md). 0 leaves
+   * single scattering only. Default 1.
    */
-  vtkScattererSetClampMacro(CacheTemplatesPerVoxel, int, 1, 64);
-  vtkGetMacro(CacheTemplatesPerVoxel, int);
+  vtkScattererSetClampMacro(MultipleScattering, double, 0.0, 16.0);
+  vtkGetMacro(MultipleScattering, double);
   ///@}
 
-  /** Cached mode: milliseconds the last cache update took (0 if none was needed). */
-  double GetLastCacheUpdateMilliseconds() const;
+  /** Transport mode: milliseconds the last rebuild took (0 if the frame reused it). */
+  double GetLastTransportBuildMilliseconds() const;
+
+  /** Transport mode: the transport volume (its size, GPU bytes, build count, timing switch). */
+  vtkScattererTransportVolume* GetTransportVolume() const;
 
   /**
    * How far, in the volume's data units, the illumination of a sample reads the
-   * volume: the template radius (TemplateRadius, or 10 x the mean of `spacing`
-   * when that is 0) times LongRangeMultiple when the thin-part check is on, plus
-   * one cache voxel (CacheScale x the largest spacing) in cached mode. A piece of a
-   * distributed volume with ghost layers at least this wide is lit exactly as the
-   * same voxels of the whole volume (the ParaView plugin requests them).
+   * volume locally: the template radius (TemplateRadius, or 10 x the mean of
+   * `spacing` when that is 0) times LongRangeMultiple in per-sample mode with the
+   * thin-part check; in transport mode the template radius (kernel and
+   * multiple-scattering reach) plus one transport voxel (TransportScale x the
+   * largest spacing). Ghost layers this wide give a piece of a distributed volume
+   * the same in-scattering as the whole volume; shadows cast from farther away
+   * (other pieces) are not seen by a piece (docs/paraview.md).
    * Assumes an unscaled volume matrix.
    */
   double GetIlluminationReach(const double spacing[3]) const;
@@ -285,7 +308,7 @@ public:
   /** Bytes of the template texture used in the last frame. */
   size_t GetTemplateTextureBytes() const;
 
-  /** Releases the template texture with the stock mapper's resources. */
+  /** Releases the template texture and the transport volume with the stock mapper's resources. */
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
   /**
@@ -312,9 +335,10 @@ protected:
   bool BoundaryRefractionEnabled = true;
   bool TemplateBlendingEnabled = false;
   int ShaderPathSelection = AUTOMATIC;
-  int IlluminationMode = CACHED;
-  int CacheScale = 2;
-  int CacheTemplatesPerVoxel = 4;
+  int IlluminationMode = TRANSPORT;
+  int TransportScale = 2;
+  int InteractiveTransportScale = 4;
+  double MultipleScattering = 1.0;
   double TemplateRadius = 0.0;
   int TemplatesPerMaterial = 8;
   int PhotonCap = 24;
@@ -332,6 +356,19 @@ private:
 
   struct vtkInternals;
   std::unique_ptr<vtkInternals> Internals;
+
+  // The stages of GPURender, in order (vtkScattererTemplateVolumeMapper.cxx).
+  struct FramePlan;
+  /** What this frame needs, or why this volume renders as stock ("" if it can be lit). */
+  std::string PlanFrame(vtkRenderer* ren, vtkVolume* vol, FramePlan& plan);
+  /** Regenerates the templates when the materials or generator settings changed. */
+  std::string UpdateTemplates(const FramePlan& plan);
+  /** Rebuilds the light transport volume if its inputs changed (transport mode). */
+  std::string UpdateTransport(vtkRenderer* ren, vtkVolume* vol, const FramePlan& plan);
+  /** Installs the GLSL and uniforms, then lets the stock ray caster render. */
+  std::string RenderIlluminated(vtkRenderer* ren, vtkVolume* vol, const FramePlan& plan);
+  /** Renders as the stock mapper, recording why. */
+  void RenderStock(vtkRenderer* ren, vtkVolume* vol, const std::string& reason);
 };
 
 #endif

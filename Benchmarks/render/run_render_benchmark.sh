@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
-# Render benchmark on the real CT head scene (512x512): stock composite, stock
-# Phong, and template illumination per effect set (cached and per-sample), all
-# in one process. Writes <out>/render.csv and one PNG per configuration.
+# Render benchmark on the real CT head scene (512x512) and on the CT head resampled
+# to 383x383x161 and 511x511x215: stock composite, stock Phong, the light transport
+# volume still and orbiting under the headlight (rebuilt every frame), the per-sample
+# photon test. Frame-time ratios are measured in one process per volume size. Then
+# peak memory, one configuration per process, at 511x511x215.
+# Writes <out>/render.csv, <out>/memory.csv and one PNG per configuration.
 #   usage: Benchmarks/render/run_render_benchmark.sh [build-dir] [out-dir] [frames]
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -9,4 +12,20 @@ build="${1:-build}"
 out="${2:-render-benchmark}"
 frames="${3:-5}"
 bash scripts/prepare-data.sh
-bash scripts/xvfb.sh "$build/bin/scatterer-bench-render" --frames "$frames" --out "$out"
+bench="$build/bin/scatterer-bench-render"
+mkdir -p "$out"
+rm -f "$out/render.csv"
+bash scripts/xvfb.sh "$bench" --frames "$frames" --out "$out" --append
+for dims in 383x383x161 511x511x215; do
+  bash scripts/xvfb.sh "$bench" --frames "$frames" --out "$out" --resample "$dims" --append \
+    --only stock_composite,stock_composite_orbit,transport_still,transport_orbit_headlight,transport_orbit_headlight_interactive
+done
+# Memory: a fresh process per configuration; the CSV's last column is its peak RSS.
+mkdir -p "$out/memory"
+rm -f "$out/memory/render.csv"
+for config in stock_composite transport_orbit_headlight; do
+  bash scripts/xvfb.sh "$bench" --frames 3 --out "$out/memory" --resample 511x511x215 --append \
+    --only "$config"
+done
+cp "$out/memory/render.csv" "$out/memory.csv"
+echo "wrote $out/render.csv and $out/memory.csv"

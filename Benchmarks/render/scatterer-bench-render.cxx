@@ -1,25 +1,30 @@
-// Render benchmark on the CT head scene (shared/scenes/ct-head.json), all
-// configurations in one process after a warm-up frame each: stock composite,
-// stock Phong, and template illumination per effect set and mode.
-// Writes a CSV (one row per configuration) and a PNG per configuration.
+// Render benchmark on the CT head scene (shared/scenes/ct-head.json): frame times of
+// stock composite, stock Phong, the light transport volume and the per-sample photon
+// test, with the camera still and orbiting under the renderer's headlight (the light
+// moves every frame, so the transport volume is rebuilt every frame), all in one
+// process after a warm-up frame each. Optionally on the CT head resampled to other
+// dimensions (the same physical extent). Writes a CSV row per configuration and a PNG
+// per configuration; the last column is the process's peak resident memory so far
+// (run one configuration per process with --only to compare memory).
 //
-//   scatterer-bench-render [--frames N] [--size WxH] [--out DIR]
+//   scatterer-bench-render [--frames N] [--size WxH] [--out DIR] [--resample XxYxZ]
+//                          [--only a,b] [--append]
 #include "Common/ScattererCtHeadScene.h"
 #include "Common/ScattererMapperSetup.h"
 #include "Common/ScattererScreenshot.h"
 
 #include "vtkCamera.h"
 #include "vtkImageData.h"
+#include "vtkImageResize.h"
 #include "vtkNew.h"
-#include "vtkPNGWriter.h"
 #include "vtkRenderWindow.h"
 #include "vtkRendererCollection.h"
 #include "vtkRenderer.h"
 #include "vtkScattererTemplateVolumeMapper.h"
+#include "vtkScattererTransportVolume.h"
 #include "vtkScattererVolumeReader.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
-#include "vtkWindowToImageFilter.h"
 
 #include <algorithm>
 #include <chrono>
@@ -37,29 +42,22 @@ struct Config
 {
   std::string Name;
   std::string Mode; // stock | phong | template
-  std::string Illumination = "cached";
-  bool Shadows = true, Thin = true, Bleeding = true, Boundary = true;
-  bool Orbit = false; // headlight + camera turning 2 degrees a frame: the cache follows
+  std::string Illumination = "transport";
+  bool Orbit = false;       // headlight + camera turning 2 degrees a frame: the light moves
+  bool Interactive = false; // frames as VTK's interactor asks while dragging (rate 20/s)
 };
 
 std::vector<Config> Configs()
 {
-  std::vector<Config> c;
-  c.push_back({ "stock_composite", "stock" });
-  c.push_back({ "stock_phong", "phong" });
-  for (const char* mode : { "cached", "per-sample" })
-  {
-    const std::string m = mode;
-    const std::string prefix = "template_" + std::string(m == "cached" ? "cached" : "persample");
-    c.push_back({ prefix + "_shadow", "template", m, true, false, false, false });
-    c.push_back({ prefix + "_shadow_thin", "template", m, true, true, false, false });
-    c.push_back({ prefix + "_shadow_thin_bleed", "template", m, true, true, true, false });
-    c.push_back({ prefix + "_all", "template", m, true, true, true, true });
-  }
-  Config orbit{ "template_cached_all_orbit_headlight", "template", "cached" };
-  orbit.Orbit = true;
-  c.push_back(orbit);
-  return c;
+  return {
+    { "stock_composite", "stock" },
+    { "stock_composite_orbit", "stock", "transport", true },
+    { "stock_phong", "phong" },
+    { "transport_still", "template" },
+    { "transport_orbit_headlight", "template", "transport", true },
+    { "transport_orbit_headlight_interactive", "template", "transport", true, true },
+    { "persample_still", "template", "per-sample" },
+  };
 }
 
 double Median(std::vector<double> v)
@@ -68,12 +66,28 @@ double Median(std::vector<double> v)
   const size_t n = v.size();
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
+
+// Peak resident set size of this process (VmHWM), MiB.
+double PeakRssMiB()
+{
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+  {
+    if (line.rfind("VmHWM:", 0) == 0)
+    {
+      return std::atof(line.c_str() + 6) / 1024.0;
+    }
+  }
+  return 0.0;
+}
 }
 
 int main(int argc, char* argv[])
 {
-  int frames = 5, width = 512, height = 512;
-  std::string out = "render-benchmark";
+  int frames = 5, width = 512, height = 512, resample[3] = { 0, 0, 0 };
+  std::string out = "render-benchmark", only;
+  bool append = false;
   for (int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
@@ -81,11 +95,19 @@ int main(int argc, char* argv[])
       frames = std::max(1, std::atoi(argv[++i]));
     else if (a == "--size" && i + 1 < argc && std::sscanf(argv[++i], "%dx%d", &width, &height) == 2)
       ;
+    else if (a == "--resample" && i + 1 < argc &&
+      std::sscanf(argv[++i], "%dx%dx%d", &resample[0], &resample[1], &resample[2]) == 3)
+      ;
     else if (a == "--out" && i + 1 < argc)
       out = argv[++i];
+    else if (a == "--only" && i + 1 < argc)
+      only = argv[++i];
+    else if (a == "--append")
+      append = true;
     else
     {
-      std::cerr << "usage: scatterer-bench-render [--frames N] [--size WxH] [--out DIR]\n";
+      std::cerr << "usage: scatterer-bench-render [--frames N] [--size WxH] [--out DIR] "
+                   "[--resample XxYxZ] [--only a,b] [--append]\n";
       return 2;
     }
   }
@@ -95,12 +117,25 @@ int main(int argc, char* argv[])
     return 1;
   }
   std::string error;
-  auto image = vtkScattererVolumeReader::ReadVolume(scatterer_examples::CtHeadPath(), &error);
+  vtkSmartPointer<vtkImageData> image =
+    vtkScattererVolumeReader::ReadVolume(scatterer_examples::CtHeadPath(), &error);
   if (!image)
   {
     std::cerr << error << "\nPrepare the CT head with: bash scripts/prepare-data.sh\n";
     return 1;
   }
+  if (resample[0] > 1 && resample[1] > 1 && resample[2] > 1)
+  {
+    vtkNew<vtkImageResize> resize; // trilinear, the same physical extent
+    resize->SetInputData(image);
+    resize->SetOutputDimensions(resample[0], resample[1], resample[2]);
+    resize->Update();
+    image = resize->GetOutput();
+  }
+  int dims[3];
+  image->GetDimensions(dims);
+  const std::string volumeName =
+    std::to_string(dims[0]) + "x" + std::to_string(dims[1]) + "x" + std::to_string(dims[2]);
   std::string mkdir = "mkdir -p '" + out + "'";
   if (std::system(mkdir.c_str()) != 0)
   {
@@ -111,20 +146,29 @@ int main(int argc, char* argv[])
   vtkNew<vtkRenderWindow> window;
   window->SetSize(width, height);
   scatterer_examples::ApplyCtHeadWindowSettings(window);
-  std::ofstream csv(out + "/render.csv");
-  csv << "config,mode,illumination,shader,frames,median_ms,min_ms,max_ms,ratio_to_stock,cache_update_ms\n";
-  double stockMedian = 0.0;
+  const std::string csvPath = out + "/render.csv";
+  const bool header = !append || !std::ifstream(csvPath).good();
+  std::ofstream csv(csvPath, append ? std::ios::app : std::ios::trunc);
+  if (header)
+  {
+    csv << "volume,config,mode,illumination,orbit,interactive,shader,frames,median_ms,min_ms,"
+           "max_ms,ratio_to_stock,build_ms,transport_dims,transport_gpu_mib,peak_rss_mib\n";
+  }
+  double stockStill = 0.0, stockOrbit = 0.0;
   for (const Config& config : Configs())
   {
+    if (!only.empty() && ("," + only + ",").find("," + config.Name + ",") == std::string::npos)
+      continue;
     scatterer_examples::RenderOptions o;
     o.Mode = config.Mode;
     o.Illumination = config.Illumination;
-    o.Shadows = config.Shadows;
-    o.Thin = config.Thin;
-    o.Bleeding = config.Bleeding;
-    o.Boundary = config.Boundary;
     auto mapper = scatterer_examples::MakeMapper(o);
     mapper->SetInputData(image);
+    auto* st = vtkScattererTemplateVolumeMapper::SafeDownCast(mapper);
+    if (st)
+    {
+      st->GetTransportVolume()->SetSynchronousTiming(true); // build times include the GPU work
+    }
     vtkNew<vtkVolumeProperty> property;
     vtkNew<vtkVolume> volume;
     volume->SetMapper(mapper);
@@ -143,10 +187,10 @@ int main(int argc, char* argv[])
     }
     window->GetRenderers()->RemoveAllItems();
     window->AddRenderer(renderer);
-    window->Render(); // warm-up: shader compile, uploads, cache
+    window->SetDesiredUpdateRate(config.Interactive ? 20.0 : 0.0001);
+    window->Render(); // warm-up: shader compile, uploads, transport volume
     window->WaitForCompletion();
-    auto* st = vtkScattererTemplateVolumeMapper::SafeDownCast(mapper);
-    std::vector<double> ms, cacheMs;
+    std::vector<double> ms, buildMs;
     for (int f = 0; f < frames; ++f)
     {
       if (config.Orbit)
@@ -158,23 +202,37 @@ int main(int argc, char* argv[])
       window->WaitForCompletion();
       ms.push_back(std::chrono::duration<double, std::milli>(
         std::chrono::steady_clock::now() - start).count());
-      cacheMs.push_back(st ? st->GetLastCacheUpdateMilliseconds() : 0.0);
+      buildMs.push_back(st ? st->GetLastTransportBuildMilliseconds() : 0.0);
     }
     const double median = Median(ms);
     if (config.Name == "stock_composite")
-    {
-      stockMedian = median;
-    }
+      stockStill = median;
+    if (config.Name == "stock_composite_orbit")
+      stockOrbit = median;
+    const double stock = config.Orbit ? stockOrbit : stockStill;
     const std::string shader = st ? st->GetLastShaderFeatures() : "stock";
-    csv << config.Name << ',' << config.Mode << ',' << (st ? config.Illumination : "-") << ",\""
-        << shader << "\"," << frames << ',' << median << ','
+    int tdims[3] = { 0, 0, 0 };
+    double gpuMiB = 0.0;
+    if (st && st->GetIlluminationMode() == vtkScattererTemplateVolumeMapper::TRANSPORT)
+    {
+      st->GetTransportVolume()->GetDimensions(tdims);
+      gpuMiB = st->GetTransportVolume()->GetGPUBytes() / (1024.0 * 1024.0);
+    }
+    const std::string tname = st ? std::to_string(tdims[0]) + "x" + std::to_string(tdims[1]) +
+        "x" + std::to_string(tdims[2])
+                                 : "-";
+    csv << volumeName << ',' << config.Name << ',' << config.Mode << ','
+        << (st ? config.Illumination : "-") << ',' << config.Orbit << ',' << config.Interactive
+        << ",\"" << shader << "\"," << frames << ',' << median << ','
         << *std::min_element(ms.begin(), ms.end()) << ',' << *std::max_element(ms.begin(), ms.end())
-        << ',' << (stockMedian > 0 ? median / stockMedian : 0.0) << ',' << Median(cacheMs) << "\n";
+        << ',' << (stock > 0 ? median / stock : 0.0) << ',' << Median(buildMs) << ',' << tname
+        << ',' << gpuMiB << ',' << PeakRssMiB() << "\n";
     csv.flush();
-    std::printf("%-40s median %8.1f ms  x%.2f  cache %6.1f ms  (%s)\n", config.Name.c_str(), median,
-      stockMedian > 0 ? median / stockMedian : 0.0, Median(cacheMs), shader.c_str());
-    scatterer_examples::WriteWindowPng(window, out + "/" + config.Name + ".png");
+    std::printf("%-12s %-40s median %8.1f ms  x%.2f  build %6.1f ms  rss %6.0f MiB  (%s)\n",
+      volumeName.c_str(), config.Name.c_str(), median, stock > 0 ? median / stock : 0.0,
+      Median(buildMs), PeakRssMiB(), shader.c_str());
+    scatterer_examples::WriteWindowPng(window, out + "/" + volumeName + "-" + config.Name + ".png");
   }
-  std::printf("wrote %s/render.csv\n", out.c_str());
+  std::printf("wrote %s\n", csvPath.c_str());
   return 0;
 }

@@ -24,9 +24,9 @@ vtkSmartPointer<vtkGPUVolumeRayCastMapper> MakeMapper(const RenderOptions& o)
                                                   : vtkScattererTemplateVolumeMapper::AUTOMATIC);
   mapper->SetIlluminationMode(o.Illumination == "per-sample"
       ? vtkScattererTemplateVolumeMapper::PER_SAMPLE
-      : vtkScattererTemplateVolumeMapper::CACHED);
-  if (o.CacheScale > 0)
-    mapper->SetCacheScale(o.CacheScale);
+      : vtkScattererTemplateVolumeMapper::TRANSPORT);
+  if (o.TransportScale > 0)
+    mapper->SetTransportScale(o.TransportScale);
   if (o.Photons > 0)
     mapper->SetPhotonCap(o.Photons);
   if (o.Templates > 0)
@@ -53,8 +53,9 @@ std::string DescribeSettings(vtkGPUVolumeRayCastMapper* mapper)
   }
   std::ostringstream out;
   out << "illumination="
-      << (m->GetIlluminationMode() == vtkScattererTemplateVolumeMapper::CACHED ? "cached" : "per-sample")
-      << " cache_scale=" << m->GetCacheScale() << " radius=" << (m->GetTemplateRadius() > 0 ? std::to_string(m->GetTemplateRadius()) : "auto")
+      << (m->GetIlluminationMode() == vtkScattererTemplateVolumeMapper::TRANSPORT ? "transport" : "per-sample")
+      << " transport_scale=" << m->GetTransportScale()
+      << " multiple_scattering=" << m->GetMultipleScattering() << " radius=" << (m->GetTemplateRadius() > 0 ? std::to_string(m->GetTemplateRadius()) : "auto")
       << " templates=" << m->GetTemplatesPerMaterial() << " photons=" << m->GetPhotonCap()
       << " interval=" << m->GetIlluminationInterval() << " threshold=" << m->GetPhotonThreshold()
       << " strength=" << m->GetOcclusionStrength() << " long_range=" << m->GetLongRangeMultiple()

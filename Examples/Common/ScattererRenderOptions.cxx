@@ -92,9 +92,11 @@ std::string RenderUsage()
          "  --blend on|off    average two templates per sample (default off)\n"
          "  --paths auto|requested  shader code for what the scene needs (auto, default)\n"
          "                    or for every effect switched on\n"
-         "  --illumination cached|per-sample  photon test on the CPU at a coarse grid read by\n"
-         "                    every sample (cached, default) or in the shader per sample\n"
-         "  --cache-scale N   cached: volume voxels per cache voxel per axis, 1..8 (default 2)\n"
+         "  --illumination transport|per-sample  light transport volume built on the GPU and\n"
+         "                    read by every sample (transport, default), or the paper's local\n"
+         "                    photon test in the shader at every sample\n"
+         "  --transport-scale N  transport: volume voxels per transport voxel per axis,\n"
+         "                    1..8 (default 2)\n"
          "  --photons N       photon cap per template, 1..1024 (default 24)\n"
          "  --templates N     templates per material, 1..64 (default 8)\n"
          "  --interval N      per-sample: ray samples between photon evaluations, 1..64\n"
@@ -215,21 +217,21 @@ bool ParseRenderOptions(int argc, char* argv[], RenderOptions& o, std::string& e
     {
       if (!value(o.Illumination))
         return false;
-      if (o.Illumination != "cached" && o.Illumination != "per-sample")
+      if (o.Illumination != "transport" && o.Illumination != "per-sample")
       {
-        error = "--illumination must be cached or per-sample, got '" + o.Illumination + "'";
+        error = "--illumination must be transport or per-sample, got '" + o.Illumination + "'";
         return false;
       }
     }
     else if (arg == "--photons" || arg == "--templates" || arg == "--interval" ||
-      arg == "--cache-scale")
+      arg == "--transport-scale")
     {
       if (!value(v))
         return false;
-      const int hi = arg == "--photons" ? 1024 : arg == "--cache-scale" ? 8 : 64;
+      const int hi = arg == "--photons" ? 1024 : arg == "--transport-scale" ? 8 : 64;
       int& target = arg == "--photons" ? o.Photons
         : arg == "--templates"         ? o.Templates
-        : arg == "--cache-scale"       ? o.CacheScale
+        : arg == "--transport-scale"       ? o.TransportScale
                                        : o.Interval;
       if (!ParseInt(v, 1, hi, target))
       {

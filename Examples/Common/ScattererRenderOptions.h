@@ -22,8 +22,8 @@ struct RenderOptions
   // Template illumination (--mode template); negative = the mapper's default.
   bool Shadows = true, Bleeding = true, Thin = true, Boundary = true, Blend = false;
   bool RequestedPaths = false; // --paths requested: every switched-on effect
-  int Photons = -1, Templates = -1, Interval = -1, CacheScale = -1;
-  std::string Illumination = "cached"; // cached | per-sample
+  int Photons = -1, Templates = -1, Interval = -1, TransportScale = -1;
+  std::string Illumination = "transport"; // transport | per-sample
   double Radius = -1, Threshold = -1, Strength = -1, LongRange = -1;
 };
 

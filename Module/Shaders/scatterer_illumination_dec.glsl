@@ -1,14 +1,23 @@
 
 //============================================================================
 // Scatterer-template illumination (ScattererTemplate; Lee, Kwon, Shin 2016).
-// Photon offsets are in template radii; st_toTex* turn them into texture
-// coordinates (they include the template radius and the volume's transform).
-// In the cached mode (CACHED) the photon test ran on the CPU at the voxels of
-// a coarse grid (scatterer/Illumination.h) and only st_material is needed here.
+// Per-sample mode (PERSAMPLE, the paper's local photon test): photon offsets
+// are in template radii; st_toTex* turn them into texture coordinates (they
+// include the template radius and the volume's transform). The transport mode
+// (TRANSPORT) reads the light transport volume (vtkScattererTransportVolume)
+// and needs nothing from this file.
 //============================================================================
 #define ST_LIGHTS @LIGHTS@
 #define ST_MATERIALS @MATERIALS@
 
+//ST::IF TRANSPORT
+// Light above this level is compressed smoothly toward 1 (scatterer_shading_impl.glsl).
+// 0.7 keeps the CT head's mean lit luminance at stock Phong's (measured 1.02x) and
+// clips no pixel (docs/rendering.md).
+const float st_knee = 0.7;
+//ST::ENDIF
+
+//ST::IF PERSAMPLE
 // Material of a normalized scalar (the TF-table coordinate), -1 for none.
 int st_material(float s)
 {
@@ -22,7 +31,6 @@ int st_material(float s)
   return -1;
 }
 
-//ST::IF PERSAMPLE
 // Which template of its material a sample uses: hashed from the voxel, so the
 // noise of individual templates becomes a fine, stable grain.
 int st_templateIndex(vec3 texPos, int salt)

@@ -15,26 +15,19 @@
 //ST::IF PERSAMPLE
         int st_m = st_material(scalar.r);
 //ST::ELSE
-        // Cells no material touches hold "unoccluded", so every visible
-        // sample can read the cache.
+        // Every visible sample reads the transport volume.
         const int st_m = 0;
 //ST::ENDIF
-//ST::IF ONETEXTURE
-        // The photon test ran on the CPU at the cache voxels; read it here
-        // (a = visibility, rgb = colour bled from other materials).
-        vec4 st_cache = texture3D(st_lightCache, g_dataPos * st_cacheTexScale + st_cacheTexOffset);
-        st_F = st_cache.a * st_unlit;
-//ST::IF BLEED
-        st_B = st_cache.rgb * st_unlit;
-//ST::ENDIF
-//ST::ENDIF
-//ST::IF TWOTEXTURES
-        // The photon test ran on the CPU at the cache voxels; read it here.
-        vec3 st_cachePos = g_dataPos * st_cacheTexScale + st_cacheTexOffset;
-        st_F = texture3D(st_lightCache, st_cachePos).rgb * st_unlit;
-//ST::IF BLEED
-        st_B = texture3D(st_bleedCache, st_cachePos).rgb * st_unlit;
-//ST::ENDIF
+//ST::IF TRANSPORT
+        // The light transport volume: the light this point receives, summed over
+        // the lights (global shadows, template in-scattering, multiple scattering,
+        // VTK's ambient term occluded like the light around the point).
+        st_F = texture3D(st_transport, g_dataPos * st_transportScale + st_transportOffset).rgb;
+        // Highlight compression: light above st_knee approaches 1 smoothly instead of
+        // clipping (multiple scattering makes dense, white materials glow well above
+        // what a display shows); below it the light is kept as it is.
+        st_F = mix(st_F, st_knee + (st_F - st_knee) / (1.0 + (st_F - st_knee) / (1.0 - st_knee)),
+          step(vec3(st_knee), st_F));
 //ST::ENDIF
 //ST::IF PERSAMPLE
         // A loop of 0 or 1 iterations rather than an if: a GPU skips a loop no

@@ -96,7 +96,7 @@ TEST(LifecycleSoak, FiveHundredFramesStayBoundedAndCorrect)
     if (frame % 125 == 60)
     {
       mapper->SetIlluminationMode(frame % 250 == 60 ? vtkScattererTemplateVolumeMapper::PER_SAMPLE
-                                                    : vtkScattererTemplateVolumeMapper::CACHED);
+                                                    : vtkScattererTemplateVolumeMapper::TRANSPORT);
     }
     window->Render();
     if (frame == 100)
@@ -114,7 +114,7 @@ TEST(LifecycleSoak, FiveHundredFramesStayBoundedAndCorrect)
   window->SetSize(96, 96);
   mapper->SetOcclusionStrength(1.0);
   mapper->SetPhotonCap(24);
-  mapper->SetIlluminationModeToCached();
+  mapper->SetIlluminationModeToTransport();
   const auto soaked = scatterer_testing::RenderAndGrab(window);
   vtkNew<vtkScattererTemplateVolumeMapper> fresh;
   fresh->SetInputData(image);

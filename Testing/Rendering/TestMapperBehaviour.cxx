@@ -143,9 +143,9 @@ TEST(MapperBehaviour, OneMaterialSceneHasNoBoundaryOrBleedingCode)
   EXPECT_EQ(features.find("boundary"), std::string::npos) << features;
   EXPECT_EQ(features.find("bleed"), std::string::npos) << features;
   const std::string glsl = scene.InstalledGLSL();
-  EXPECT_NE(glsl.find("st_material"), std::string::npos);
+  EXPECT_NE(glsl.find("st_transport"), std::string::npos);
   EXPECT_EQ(glsl.find("st_speedRatio"), std::string::npos);
-  EXPECT_EQ(glsl.find("st_bleedCache"), std::string::npos);
+  EXPECT_EQ(glsl.find("st_matColor"), std::string::npos);
 }
 
 TEST(MapperBehaviour, TwoMaterialSceneGetsBoundaryAndBleeding)
@@ -233,7 +233,7 @@ TEST(MapperBehaviour, MultiComponentDataRendersAsStockWithOneWarning)
 
 TEST(MapperBehaviour, UniformOnlyChangesDoNotRebuildTheShader)
 {
-  for (int mode : { vtkScattererTemplateVolumeMapper::CACHED,
+  for (int mode : { vtkScattererTemplateVolumeMapper::TRANSPORT,
          vtkScattererTemplateVolumeMapper::PER_SAMPLE })
   {
     Scene scene;
@@ -316,7 +316,7 @@ TEST(MapperBehaviour, ShaderThatFailsToCompileFallsBackToStockWithAnError)
 
 TEST(MapperBehaviour, OcclusionOnlyEverDarkens)
 {
-  for (int mode : { vtkScattererTemplateVolumeMapper::CACHED,
+  for (int mode : { vtkScattererTemplateVolumeMapper::TRANSPORT,
          vtkScattererTemplateVolumeMapper::PER_SAMPLE })
   {
     Scene scene(true);

@@ -1,9 +1,12 @@
 // A piece of a split volume (what each rank renders in ParaView with MPI) must light
-// its voxels as the whole volume does: the illumination cache sits on a lattice
-// anchored to extent index 0, and with SetMaterialDerivationRange(the whole range)
-// a piece derives the whole volume's materials even when it lacks some scalars.
-// The piece here starts at an odd extent index and lacks the opaque sheet that
-// gives the whole volume its densest material.
+// its voxels as the whole volume does when everything between them and the light is
+// in the piece: the transport volume sits on a lattice anchored to extent index 0,
+// and with SetMaterialDerivationRange(the whole range) a piece derives the whole
+// volume's materials even when it lacks some scalars. The piece here starts at an
+// odd extent index and lacks the opaque sheet that gives the whole volume its
+// densest material; the light comes from the piece's side (+x), so the sheet's
+// shadow falls away from it. (Shadows cast into a piece from other pieces are not
+// seen by it: docs/paraview.md.)
 #include "ScattererRenderHarness.h"
 
 #include "vtkCamera.h"
@@ -51,8 +54,9 @@ vtkSmartPointer<vtkImageData> Volume(int fromX)
   return image;
 }
 
-// Renders `image` cropped to the owned part, lit along +x.
-std::vector<unsigned char> RenderOwnedPart(vtkImageData* image, bool wholeRange)
+// Renders `image` cropped to the owned part, lit from +x.
+std::vector<unsigned char> RenderOwnedPart(
+  vtkImageData* image, bool wholeRange, int mode = vtkScattererTemplateVolumeMapper::TRANSPORT)
 {
   vtkNew<vtkPiecewiseFunction> opacity;
   opacity->AddPoint(0, 0.0);
@@ -73,6 +77,7 @@ std::vector<unsigned char> RenderOwnedPart(vtkImageData* image, bool wholeRange)
   mapper->AutoAdjustSampleDistancesOff();
   mapper->SetSampleDistance(0.5);
   mapper->SetTemplateRadius(3.0);
+  mapper->SetIlluminationMode(mode);
   mapper->CroppingOn();
   mapper->SetCroppingRegionFlagsToSubVolume();
   mapper->SetCroppingRegionPlanes(kOwnedFrom, NX - 1, 0, NY - 1, 0, NZ - 1);
@@ -90,8 +95,8 @@ std::vector<unsigned char> RenderOwnedPart(vtkImageData* image, bool wholeRange)
   vtkNew<vtkLight> light;
   light->SetLightTypeToSceneLight();
   light->PositionalOff();
-  light->SetPosition(-100, 0.5 * NY, 0.5 * NZ);
-  light->SetFocalPoint(0, 0.5 * NY, 0.5 * NZ);
+  light->SetPosition(NX + 100, 0.5 * NY, 0.5 * NZ);
+  light->SetFocalPoint(NX, 0.5 * NY, 0.5 * NZ);
   renderer->AddLight(light);
   vtkCamera* camera = renderer->GetActiveCamera();
   // From the far end, so rays reach the crop plane x = 48 at its back rather than
@@ -106,7 +111,10 @@ std::vector<unsigned char> RenderOwnedPart(vtkImageData* image, bool wholeRange)
   window->GetRenderers()->RemoveAllItems();
   window->AddRenderer(renderer);
   auto pixels = scatterer_testing::RenderAndGrab(window);
-  EXPECT_EQ(mapper->GetLastShaderFeatures().rfind("cached", 0), 0u) << mapper->GetLastShaderFeatures();
+  EXPECT_EQ(mapper->GetLastShaderFeatures().rfind(
+              mode == vtkScattererTemplateVolumeMapper::TRANSPORT ? "transport" : "per-sample", 0),
+    0u)
+    << mapper->GetLastShaderFeatures();
   window->RemoveRenderer(renderer);
   mapper->ReleaseGraphicsResources(window);
   return pixels;
@@ -150,7 +158,7 @@ TEST(VolumePieces, PieceWithTheWholeRangeIsLitAsTheWholeVolume)
   const auto whole = RenderOwnedPart(Volume(0), false);
   const auto piece = RenderOwnedPart(Volume(kPieceFrom), true);
   ASSERT_GT(scatterer_testing::MeanBrightness(whole), 5.0) << "the owned part is visible";
-  // Same samples, same cache lattice, same materials. Only the silhouette of the crop
+  // Same samples, same transport lattice, same materials. Only the silhouette of the crop
   // plane moves by rounding (its texture coordinate is relative to each image).
   const Difference d = Compare(whole, piece);
   EXPECT_LE(d.Mean, 0.25);
@@ -161,8 +169,11 @@ TEST(VolumePieces, PieceWithItsOwnRangeDerivesOtherMaterials)
 {
   // The control: from its own data range (medium only) the piece derives a
   // translucent material with other templates, and lights its voxels differently.
-  const auto whole = RenderOwnedPart(Volume(0), false);
-  const auto piece = RenderOwnedPart(Volume(kPieceFrom), false);
+  // Shown in per-sample mode, where the templates are the whole light model; the
+  // transport volume's kernels here reach the template radius in both cases.
+  const auto whole = RenderOwnedPart(Volume(0), false, vtkScattererTemplateVolumeMapper::PER_SAMPLE);
+  const auto piece =
+    RenderOwnedPart(Volume(kPieceFrom), false, vtkScattererTemplateVolumeMapper::PER_SAMPLE);
   const Difference d = Compare(whole, piece);
   EXPECT_TRUE(d.Mean > 0.25 || d.FractionOver4 > 0.01);
 }

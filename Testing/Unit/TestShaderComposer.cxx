@@ -25,7 +25,7 @@ bool Has(const std::string& text, const std::string& token)
 Features PerSampleAllOn()
 {
   Features f;
-  f.Cached = false;
+  f.Transport = false;
   f.Materials = 2;
   f.Lights = 2;
   f.Positional = true;
@@ -51,26 +51,29 @@ TEST(ShaderComposer, PreprocessRejectsUnbalancedMarkers)
 
 TEST(ShaderComposer, NoMarkerOrPlaceholderReachesTheDriver)
 {
-  for (bool cached : { true, false })
+  for (bool transport : { true, false })
   {
     Features f = PerSampleAllOn();
-    f.Cached = cached;
+    f.Transport = transport;
     const std::string glsl = All(f);
-    EXPECT_FALSE(Has(glsl, "//ST::")) << cached;
-    EXPECT_FALSE(Has(glsl, "@LIGHTS@")) << cached;
-    EXPECT_TRUE(Has(glsl, "#define ST_LIGHTS 2")) << cached;
-    EXPECT_TRUE(Has(glsl, "#define ST_MATERIALS 2")) << cached;
+    EXPECT_FALSE(Has(glsl, "//ST::")) << transport;
+    EXPECT_FALSE(Has(glsl, "@LIGHTS@")) << transport;
+    EXPECT_TRUE(Has(glsl, "#define ST_LIGHTS 2")) << transport;
+    EXPECT_TRUE(Has(glsl, "#define ST_MATERIALS 2")) << transport;
   }
 }
 
-TEST(ShaderComposer, PerSampleCarriesThePhotonLoopAndCachedDoesNot)
+TEST(ShaderComposer, PerSampleCarriesThePhotonLoopAndTransportDoesNot)
 {
   Features f = PerSampleAllOn();
   EXPECT_TRUE(Has(All(f), "st_gatherTemplate"));
   EXPECT_TRUE(Has(All(f), "st_templates"));
-  f.Cached = true;
+  EXPECT_FALSE(Has(All(f), "st_transport"));
+  f.Transport = true;
   EXPECT_FALSE(Has(All(f), "st_gatherTemplate"));
-  EXPECT_TRUE(Has(All(f), "st_lightCache"));
+  EXPECT_FALSE(Has(All(f), "st_templates"));
+  EXPECT_FALSE(Has(All(f), "st_matRange")); // the transport volume resolved the materials
+  EXPECT_TRUE(Has(All(f), "st_transport"));
 }
 
 TEST(ShaderComposer, EachEffectSwitchedOffIsAbsent)
@@ -98,21 +101,6 @@ TEST(ShaderComposer, EachEffectSwitchedOffIsAbsent)
     c.Off(off);
     EXPECT_FALSE(Has(All(off), c.Token)) << c.Name << " off should not carry " << c.Token;
   }
-}
-
-TEST(ShaderComposer, CachedBleedingUsesASecondTextureOnlyForColouredLights)
-{
-  Features f;
-  f.Cached = true;
-  f.Materials = 2;
-  f.Bleed = true;
-  f.CacheInOne = true;
-  EXPECT_FALSE(Has(All(f), "st_bleedCache"));
-  EXPECT_TRUE(Has(All(f), "st_cache.rgb"));
-  f.CacheInOne = false;
-  EXPECT_TRUE(Has(All(f), "st_bleedCache"));
-  f.Bleed = false;
-  EXPECT_FALSE(Has(All(f), "st_bleedCache"));
 }
 
 TEST(ShaderComposer, PhongKeepsVtkShadingAndNormalizes)

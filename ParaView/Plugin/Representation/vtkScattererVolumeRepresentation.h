@@ -47,7 +47,7 @@ public:
   void SetBoundaryRefractionEnabled(bool enabled);
   void SetTemplateBlendingEnabled(bool enabled);
   void SetIlluminationMode(int mode);
-  void SetCacheScale(int scale);
+  void SetTransportScale(int scale);
   void SetTemplateRadius(double radius);
   void SetTemplatesPerMaterial(int count);
   void SetPhotonCap(int cap);

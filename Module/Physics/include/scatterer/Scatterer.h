@@ -3,7 +3,7 @@
 
 #include <scatterer/GeneratorSettings.h>
 #include <scatterer/Half.h>
-#include <scatterer/Illumination.h>
+#include <scatterer/Transport.h>
 #include <scatterer/Material.h>
 #include <scatterer/Pack.h>
 #include <scatterer/Random.h>

@@ -1,0 +1,160 @@
+/**
+ * @class   vtkScattererTransportVolume
+ * @brief   The light transport volume: global shadows and template in-scattering,
+ *          built on the GPU from the ray caster's own volume texture.
+ *
+ * For every light, a transmittance volume T_l (the fraction of the light's energy
+ * that reaches each point through the whole volume) is swept slice by slice along
+ * the light's dominant axis (Beer-Lambert, O(N) per light); a second pass gathers
+ * it through each material's scatterer templates (single scattering, colour
+ * bleeding, Snell rescaling) into one RGB texture: the light each point receives,
+ * summed over the lights. The light scattered once is then spread by a diffusion
+ * solve on a coarser grid (multiple scattering) and added. The ray caster reads
+ * that texture once per sample. The equations are in
+ * Shaders/scatterer_transport_*.glsl and docs/model.md.
+ *
+ * Both passes are fragment passes into textures (vtkOpenGLFramebufferObject,
+ * vtkOpenGLQuadHelper) that read the mapper's scalar texture directly: there is no
+ * host copy of the volume. Extinction follows VTK's opacity convention and the
+ * transfer function the scene really uses; cropping and clipping planes remove
+ * material from the transport (it neither shows nor casts shadow); the placement
+ * is the ray caster's own (dataset matrix, image direction, the volume's matrix).
+ *
+ * The class owns its textures and a change key. Update() rebuilds only when the
+ * inputs differ from the last build (volume upload, transfer function, lights,
+ * geometry, materials, settings). It has no pointer back into the mapper: the
+ * mapper fills a Inputs record each frame.
+ *
+ * @sa vtkScattererTemplateVolumeMapper
+ */
+#ifndef vtkScattererTransportVolume_h
+#define vtkScattererTransportVolume_h
+
+#include "ScattererTemplateModule.h" // for export macro
+#include "vtkObject.h"
+
+#include <memory> // for Internals
+#include <string> // for Inputs
+#include <vector> // for Inputs
+
+class vtkOpenGLRenderWindow;
+class vtkTextureObject;
+class vtkWindow;
+
+class SCATTERERTEMPLATE_EXPORT vtkScattererTransportVolume : public vtkObject
+{
+public:
+  static vtkScattererTransportVolume* New();
+  vtkTypeMacro(vtkScattererTransportVolume, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /** One light as the transport sees it (world coordinates). */
+  struct Light
+  {
+    float Toward[3] = { 0, 0, 1 };      ///< directional: unit vector toward the light
+    float Position[3] = { 0, 0, 0 };    ///< positional: position
+    bool Positional = false;
+    float Color[3] = { 1, 1, 1 };       ///< irradiance: kd x diffuse colour x intensity
+    float Ambient[3] = { 0, 0, 0 };     ///< VTK's ambient term: ka x ambient colour x intensity
+    float FocalDirection[3] = { 0, 0, -1 }; ///< positional: unit vector light -> focal point
+    float Attenuation[3] = { 1, 0, 0 }; ///< positional: 1 / (a0 + a1 d + a2 d^2)
+    float ConeCos = -2.0f;              ///< positional spot: cos(cone angle); < -1: none
+    float Exponent = 1.0f;              ///< positional spot exponent
+  };
+
+  /** Everything one build needs; filled by the mapper every frame. */
+  struct Inputs
+  {
+    vtkTextureObject* Volume = nullptr; ///< the ray caster's scalar texture (3D)
+    float ScalarScale = 1, ScalarBias = 0; ///< texel -> normalised scalar
+    unsigned long VolumeUploadTime = 0;    ///< changes when the texture's content does
+    double TexToWorld[16] = {};   ///< volume texture coordinates -> world (row-major)
+    double TexToDataset[16] = {}; ///< volume texture coordinates -> dataset (row-major)
+    /// Over the normalised scalar [0, 1], 4 per entry: albedo rgb (the colour transfer
+    /// function) and sigma_t per world unit (the opacity transfer function).
+    std::vector<float> Medium;
+    float ExtinctionScale = 1;     ///< OcclusionStrength
+    std::vector<float> ClipPlanes; ///< 4 per plane (world): kept where n.p + d >= 0
+    bool Cropping = false;
+    int CropFlags = 0;
+    float CropMin[3] = { 0, 0, 0 }, CropMax[3] = { 0, 0, 0 }; ///< dataset coordinates
+    int Downsample = 2;            ///< volume voxels per transport voxel along each axis
+    int IndexOrigin[3] = { 0, 0, 0 }; ///< structured index of the texture's first texel (extent start)
+    std::vector<Light> Lights;
+    // Materials (at most 8): a table of material indices over the normalised scalar
+    // (-1: none), colours, albedos, ratio tables (materials^2, row = the sample's
+    // material) and each one's kernel.
+    std::vector<float> MaterialTable;
+    std::vector<float> MaterialColors; ///< 3 per material
+    std::vector<float> SpeedRatios;
+    std::vector<float> OpacityRatios;
+    std::vector<float> Kernels;        ///< per material KernelWidth x (offset xyz, weight)
+    int KernelWidth = 0;
+    bool Bleed = true;
+    bool Boundary = true;
+    float MultipleScattering = 1;      ///< strength of the multiple-scattering term (0: none)
+    int DiffusionIterations = 24;      ///< Jacobi iterations of the diffusion solve
+    float AmbientRadius = 1;           ///< world units the ambient occlusion averages over
+  };
+
+  /**
+   * Rebuilds the transport volume if @p inputs differ from the last build, in
+   * the current OpenGL context of @p window. Returns false with @p why set when
+   * it cannot (no volume texture, a framebuffer the driver refuses, ...).
+   */
+  bool Update(vtkOpenGLRenderWindow* window, const Inputs& inputs, std::string& why);
+
+  /** The received-light texture (RGB, world irradiance summed over the lights). */
+  vtkTextureObject* GetLightTexture() const;
+
+  /** Volume texture coordinates -> light texture coordinates: t * scale + offset. */
+  void GetTextureTransform(float scale[3], float offset[3]) const;
+
+  /** Transport grid dimensions of the last build. */
+  void GetDimensions(int dims[3]) const;
+
+  /** Milliseconds the last rebuild took, GPU work included (0: the frame reused it). */
+  double GetLastBuildMilliseconds() const;
+
+  /** Rebuilds so far (for tests and benchmarks). */
+  int GetBuildCount() const;
+
+  /** GPU bytes held: the light and source textures, the transmittance, the slices, the diffusion grids. */
+  size_t GetGPUBytes() const;
+
+  /**
+   * For tests: the transmittance of light @p light of the last build, in grid
+   * order (x fastest), rebuilt for that light alone. Empty if none.
+   */
+  std::vector<float> ReadTransmittance(vtkOpenGLRenderWindow* window, int light);
+
+  /** For tests: the received-light texture read back, RGB per grid texel. */
+  std::vector<float> ReadLight(vtkOpenGLRenderWindow* window);
+
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+  ///@{
+  /**
+   * Wait for the GPU to finish a build before timing it (glFinish), so that
+   * GetLastBuildMilliseconds includes the GPU work. For benchmarks; default off
+   * (off, it is the time to issue the passes).
+   */
+  vtkSetMacro(SynchronousTiming, bool);
+  vtkGetMacro(SynchronousTiming, bool);
+  ///@}
+
+protected:
+  vtkScattererTransportVolume();
+  ~vtkScattererTransportVolume() override;
+
+  bool SynchronousTiming = false;
+
+private:
+  vtkScattererTransportVolume(const vtkScattererTransportVolume&) = delete;
+  void operator=(const vtkScattererTransportVolume&) = delete;
+
+  struct vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+};
+
+#endif

@@ -1,0 +1,239 @@
+// The light transport volume against closed forms: Beer-Lambert through a
+// homogeneous slab for axis-aligned, oblique and positional lights; a sphere's
+// shadow on a plate where geometry puts it; no shadow from cropped or clipped
+// material. The transmittance is read back from the GPU (llvmpipe here).
+#include "ScattererRenderHarness.h"
+
+#include "vtkCamera.h"
+#include "vtkImageData.h"
+#include "vtkLight.h"
+#include "vtkNew.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPlane.h"
+#include "vtkPointData.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkScattererTemplateVolumeMapper.h"
+#include "vtkScattererTransportVolume.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+
+namespace
+{
+using Filler = std::function<unsigned char(int, int, int)>;
+
+vtkSmartPointer<vtkImageData> MakeVolume(int n, double spacing, const Filler& fill)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(n, n, n);
+  image->SetSpacing(spacing, spacing, spacing);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+  auto* p = static_cast<unsigned char*>(image->GetScalarPointer());
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+        *p++ = fill(i, j, k);
+  return image;
+}
+
+// A scene of one volume whose voxels of value 200 have opacity `alpha` per unit
+// distance (1 world unit) and 0 is empty; one light; the mapper's transport volume
+// at full resolution (TransportScale 1), so grid texel j is voxel j.
+struct TransportScene
+{
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkVolume> Volume;
+  vtkNew<vtkScattererTemplateVolumeMapper> Mapper;
+  vtkNew<vtkVolumeProperty> Property;
+  vtkNew<vtkLight> Light;
+  int N = 0;
+
+  TransportScene(vtkImageData* image, double alpha)
+  {
+    this->N = image->GetDimensions()[0];
+    vtkNew<vtkPiecewiseFunction> opacity;
+    opacity->AddPoint(0, 0.0);
+    opacity->AddPoint(100, 0.0);
+    opacity->AddPoint(200, alpha);
+    opacity->AddPoint(255, alpha);
+    this->Property->SetScalarOpacity(opacity);
+    this->Property->SetScalarOpacityUnitDistance(1.0);
+    // Nearest: a voxel's value holds over [i - 0.5, i + 0.5], so a slab has sharp
+    // faces and the closed forms below are exact for the sweep's midpoint samples.
+    this->Property->SetInterpolationTypeToNearest();
+    this->Mapper->SetInputData(image);
+    this->Mapper->SetTransportScale(1);
+    this->Volume->SetMapper(this->Mapper);
+    this->Volume->SetProperty(this->Property);
+    this->Renderer->AddVolume(this->Volume);
+    this->Renderer->RemoveAllLights();
+    this->Light->SetLightTypeToSceneLight();
+    this->Renderer->AddLight(this->Light);
+    this->Renderer->ResetCamera();
+  }
+
+  void SetDirectional(double x, double y, double z)
+  {
+    const double c = 0.5 * (this->N - 1);
+    this->Light->SetPositional(false);
+    this->Light->SetFocalPoint(c, c, c);
+    this->Light->SetPosition(c + x, c + y, c + z);
+  }
+
+  // Renders once in the shared window and reads the transmittance back (grid order).
+  std::vector<float> Transmittance()
+  {
+    vtkRenderWindow* window = scatterer_testing::SharedWindow();
+    window->AddRenderer(this->Renderer);
+    window->Render();
+    auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window);
+    std::vector<float> t = this->Mapper->GetTransportVolume()->ReadTransmittance(gl, 0);
+    window->RemoveRenderer(this->Renderer);
+    return t;
+  }
+
+  float At(const std::vector<float>& t, int i, int j, int k) const
+  {
+    return t[static_cast<size_t>(i) + this->N * (j + static_cast<size_t>(this->N) * k)];
+  }
+};
+
+// Homogeneous slab z in [zLo, zHi] (voxels), opacity alpha per unit: sigma = -ln(1 - alpha).
+Filler Slab(int zLo, int zHi)
+{
+  return [=](int, int, int k) -> unsigned char { return k >= zLo && k <= zHi ? 200 : 0; };
+}
+}
+
+TEST(TransportVolume, SlabAxisAlignedLightIsBeerLambert)
+{
+  const int n = 32;
+  auto image = MakeVolume(n, 1.0, Slab(8, 23));
+  TransportScene scene(image, 0.1);
+  scene.SetDirectional(0, 0, 1); // from +z
+  const auto t = scene.Transmittance();
+  ASSERT_EQ(t.size(), static_cast<size_t>(n * n * n));
+  const double sigma = -std::log(1.0 - 0.1);
+  for (int k : { 20, 16, 12, 8, 4 })
+  {
+    // Steps from k up to the slab's top voxel (23) whose midpoints lie in the slab.
+    const double depth = 23.0 - std::max(k, 7);
+    const double expected = std::exp(-sigma * depth);
+    EXPECT_NEAR(scene.At(t, 16, 16, k), expected, 0.01 * expected + 1e-3) << "k = " << k;
+  }
+  EXPECT_NEAR(scene.At(t, 16, 16, 28), 1.0, 1e-3) << "above the slab the light is unattenuated";
+}
+
+TEST(TransportVolume, SlabObliqueLightIsBeerLambert)
+{
+  const int n = 40;
+  auto image = MakeVolume(n, 1.0, Slab(10, 29));
+  TransportScene scene(image, 0.08);
+  // 30 degrees off the z axis in x: the path through the slab is depth / cos(30).
+  const double angle = 30.0 * 3.14159265358979 / 180.0;
+  scene.SetDirectional(std::sin(angle), 0, std::cos(angle));
+  const auto t = scene.Transmittance();
+  ASSERT_EQ(t.size(), static_cast<size_t>(n * n * n));
+  const double sigma = -std::log(1.0 - 0.08);
+  for (int k : { 25, 20, 15, 10 })
+  {
+    const double expected = std::exp(-sigma * (29.0 - k) / std::cos(angle));
+    EXPECT_NEAR(scene.At(t, 20, 20, k), expected, 0.01 * expected + 2e-3) << "k = " << k;
+  }
+}
+
+TEST(TransportVolume, SlabPositionalLightIsBeerLambertAlongTheRay)
+{
+  const int n = 40;
+  auto image = MakeVolume(n, 1.0, Slab(10, 29));
+  TransportScene scene(image, 0.08);
+  // A point light 30 units above the slab's top face, over the centre.
+  scene.Light->SetPositional(true);
+  scene.Light->SetConeAngle(180.0);
+  scene.Light->SetPosition(19.5, 19.5, 59.0);
+  scene.Light->SetFocalPoint(19.5, 19.5, 0.0);
+  const auto t = scene.Transmittance();
+  ASSERT_EQ(t.size(), static_cast<size_t>(n * n * n));
+  const double sigma = -std::log(1.0 - 0.08);
+  const double lz = 59.0, lx = 19.5, ly = 19.5;
+  for (int i : { 19, 28, 35 })
+  {
+    const int k = 15;
+    // The ray from (i, 20, k) to the light crosses the slab from z = k to z = 29.
+    const double dx = lx - i, dy = ly - 20, dz = lz - k;
+    const double length = std::sqrt(dx * dx + dy * dy + dz * dz);
+    const double inside = length * (29.0 - k) / dz;
+    const double expected = std::exp(-sigma * inside);
+    EXPECT_NEAR(scene.At(t, i, 20, k), expected, 0.01 * expected + 2e-3) << "i = " << i;
+  }
+}
+
+TEST(TransportVolume, SphereShadowFallsWhereGeometryPutsIt)
+{
+  // An opaque ball (radius 5 at (24, 24, 36)) over a plate (z in [4, 6]); light
+  // toward (0.25, 0, 1): at z = 7 the ball's shadow is centred at x = 24 - 0.25 (36 - 7)
+  // = 16.75, an ellipse of half-width 5 / cos(14 deg) = 5.2 along x and 5 along y.
+  const int n = 48;
+  auto image = MakeVolume(n, 1.0, [](int i, int j, int k) -> unsigned char {
+    const double r2 = (i - 24.0) * (i - 24.0) + (j - 24.0) * (j - 24.0) + (k - 36.0) * (k - 36.0);
+    return (r2 <= 25.0 || (k >= 4 && k <= 6)) ? 200 : 0;
+  });
+  TransportScene scene(image, 0.95);
+  scene.SetDirectional(0.25, 0, 1.0);
+  const auto t = scene.Transmittance();
+  ASSERT_EQ(t.size(), static_cast<size_t>(n * n * n));
+  // Just above the plate (z = 7): dark at the predicted place, lit one ball width
+  // beside it on every side (the sweep's interpolation softens the edge by a few voxels).
+  EXPECT_LT(scene.At(t, 17, 24, 7), 0.05) << "no shadow at the predicted place";
+  EXPECT_GT(scene.At(t, 27, 24, 7), 0.9) << "shadow beyond the ball's width (+x)";
+  EXPECT_GT(scene.At(t, 7, 24, 7), 0.9) << "shadow beyond the ball's width (-x)";
+  EXPECT_GT(scene.At(t, 17, 34, 7), 0.9) << "shadow beyond the ball's width (+y)";
+  EXPECT_GT(scene.At(t, 17, 14, 7), 0.9) << "shadow beyond the ball's width (-y)";
+  // And inside the plate, under its lit top, the plate itself shadows.
+  EXPECT_LT(scene.At(t, 30, 24, 4), 0.05) << "the plate casts no shadow on itself";
+}
+
+TEST(TransportVolume, ClippedOrCroppedOccluderCastsNoShadow)
+{
+  const int n = 32;
+  // An opaque occluder block z in [20, 25]; light from +z.
+  auto image = MakeVolume(n, 1.0, Slab(20, 25));
+  for (int variant = 0; variant < 3; ++variant)
+  {
+    TransportScene scene(image, 0.95);
+    scene.SetDirectional(0, 0, 1);
+    if (variant == 1)
+    {
+      vtkNew<vtkPlane> plane; // keeps z <= 15: the occluder is clipped away
+      plane->SetOrigin(0, 0, 15.5);
+      plane->SetNormal(0, 0, -1);
+      scene.Mapper->AddClippingPlane(plane);
+    }
+    if (variant == 2)
+    {
+      scene.Mapper->SetCropping(true);
+      scene.Mapper->SetCroppingRegionPlanes(0, 31, 0, 31, 0, 15.5);
+      scene.Mapper->SetCroppingRegionFlagsToSubVolume();
+    }
+    const auto t = scene.Transmittance();
+    ASSERT_EQ(t.size(), static_cast<size_t>(n * n * n));
+    const float below = scene.At(t, 16, 16, 10);
+    if (variant == 0)
+    {
+      EXPECT_LT(below, 0.01) << "the occluder casts no shadow";
+    }
+    else
+    {
+      EXPECT_GT(below, 0.99) << (variant == 1 ? "clipped" : "cropped")
+                             << " material still casts a shadow";
+    }
+  }
+}
