@@ -587,14 +587,16 @@ std::string vtkScattererTemplateVolumeMapper::PlanFrame(
   scatterer_shader::Features& f = plan.Features;
   f.Lights = plan.Lights.Count();
   f.Materials = static_cast<int>(mats.size());
+  f.Transport = this->IlluminationMode == TRANSPORT;
   f.Shadow = this->ShadowsEnabled;
-  f.Thin = f.Shadow && this->ThinPartCheckEnabled && (!automatic || this->LongRangeMultiple > 1.0);
+  // The thin-part check and template blending belong to the per-sample photon test.
+  f.Thin = !f.Transport && f.Shadow && this->ThinPartCheckEnabled &&
+    (!automatic || this->LongRangeMultiple > 1.0);
   f.Bleed = this->ColorBleedingEnabled && (!automatic || (f.Materials > 1 && colorsDiffer));
   f.Boundary = this->BoundaryRefractionEnabled && f.Materials > 1 && (!automatic || indicesDiffer);
   f.Positional = plan.Lights.AnyPositional;
-  f.Blend2 = this->TemplateBlendingEnabled;
+  f.Blend2 = !f.Transport && this->TemplateBlendingEnabled;
   f.Phong = property->GetShade() != 0;
-  f.Transport = this->IlluminationMode == TRANSPORT;
   if (automatic && !f.Shadow && !f.Bleed && !f.Boundary)
   {
     return "no illumination effect is switched on";
@@ -812,7 +814,6 @@ std::string vtkScattererTemplateVolumeMapper::UpdateTransport(
   t.Bleed = plan.Features.Bleed;
   t.Boundary = plan.Features.Boundary;
   t.MultipleScattering = static_cast<float>(this->MultipleScattering);
-  t.AmbientRadius = static_cast<float>(plan.Radius);
 
   auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
   std::string why;

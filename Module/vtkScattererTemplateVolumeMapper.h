@@ -109,15 +109,15 @@ public:
 
   ///@{
   /** Effect switches (default on, template blending off). */
-  /** Occlusion test at each photon: shadows and ambient occlusion. */
+  /** Occlusion: shadows (per sample: at each photon; transport: along every light path). */
   vtkScattererSetSwitchMacro(ShadowsEnabled);
   /** Photons in another material carry that material's colour. */
   vtkScattererSetSwitchMacro(ColorBleedingEnabled);
-  /** The longer check along photon directions, so thin parts do not glow. */
+  /** Per sample: the longer check along photon directions, so thin parts do not glow. */
   vtkScattererSetSwitchMacro(ThinPartCheckEnabled);
   /** Snell's-law rescaling of photon offsets across materials. */
   vtkScattererSetSwitchMacro(BoundaryRefractionEnabled);
-  /** Average two templates per sample (smoother, about twice the photon work). */
+  /** Per sample: average two templates per sample (smoother, about twice the photon work). */
   vtkScattererSetSwitchMacro(TemplateBlendingEnabled);
   ///@}
 
@@ -205,28 +205,38 @@ public:
   ///@{
   /**
    * Template radius in world units. 0 (default): 10 times the mean voxel
-   * spacing. Larger radii see occluders farther away (softer, longer shadows).
+   * spacing. Per sample: the reach of the photon test (larger radii see
+   * occluders farther away). Transport: the largest in-scattering kernel (a
+   * material's photons sit at its own mean free paths, up to this radius).
    */
   vtkScattererSetClampMacro(TemplateRadius, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(TemplateRadius, double);
   ///@}
 
   ///@{
-  /** Templates per material (default 8); more templates mean finer grain. */
+  /**
+   * Templates per material (default 8). Per sample: more templates mean finer
+   * grain. Transport: a material's kernel is the mean of its templates.
+   */
   vtkScattererSetClampMacro(TemplatesPerMaterial, int, 1, 64);
   vtkGetMacro(TemplatesPerMaterial, int);
   ///@}
 
   ///@{
-  /** Most photons tested per template and sample (default 24). */
+  /**
+   * Per sample: most photons tested per template and sample. Transport: photons
+   * in a material's in-scattering kernel (the most intense of all its templates'
+   * photons). Default 24.
+   */
   vtkScattererSetClampMacro(PhotonCap, int, 1, 1024);
   vtkGetMacro(PhotonCap, int);
   ///@}
 
   ///@{
   /**
-   * Scales the optical depth of occluders at photon positions (default 1;
-   * 0 switches occlusion off without changing the shader).
+   * Scales the optical depth of occluders (default 1, physical; 0 switches
+   * occlusion off without changing the shader): at photon positions (per
+   * sample), or along every light path of the transport volume.
    */
   vtkScattererSetClampMacro(OcclusionStrength, double, 0.0, 100.0);
   vtkGetMacro(OcclusionStrength, double);
@@ -234,24 +244,28 @@ public:
 
   ///@{
   /**
-   * Ray samples between two photon evaluations (default 4; 1 = every sample).
-   * Illumination varies on the scale of the template radius, so a ray reuses
-   * it for a few samples (always re-evaluated when the material changes).
+   * Per sample: ray samples between two photon evaluations (default 4; 1 =
+   * every sample). Illumination varies on the scale of the template radius, so
+   * a ray reuses it for a few samples (always re-evaluated when the material
+   * changes). The transport mode reads its light at every sample.
    */
   vtkScattererSetClampMacro(IlluminationInterval, int, 1, 64);
   vtkGetMacro(IlluminationInterval, int);
   ///@}
 
   ///@{
-  /** How far the thin-part check looks, in multiples of the photon offset (default 3). */
+  /**
+   * Per sample: how far the thin-part check looks, in multiples of the photon
+   * offset (default 3). The transport volume sees the whole volume.
+   */
   vtkScattererSetClampMacro(LongRangeMultiple, double, 1.0, 64.0);
   vtkGetMacro(LongRangeMultiple, double);
   ///@}
 
   ///@{
   /**
-   * The photon loop stops once ray transmittance x photon intensity falls
-   * below this (default 0.002). 0 tests every photon up to PhotonCap.
+   * Per sample: the photon loop stops once ray transmittance x photon intensity
+   * falls below this (default 0.002). 0 tests every photon up to PhotonCap.
    */
   vtkScattererSetClampMacro(PhotonThreshold, double, 0.0, 1.0);
   vtkGetMacro(PhotonThreshold, double);

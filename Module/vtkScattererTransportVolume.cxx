@@ -15,6 +15,7 @@
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
+#include "scatterer_transport_coarsen.h"
 #include "scatterer_transport_combine.h"
 #include "scatterer_transport_common.h"
 #include "scatterer_transport_diffuse.h"
@@ -109,11 +110,14 @@ struct vtkScattererTransportVolume::vtkInternals
   vtkSmartPointer<vtkTextureObject> Medium;        // RGBA32F, N x 1: albedo, sigma_t
   vtkSmartPointer<vtkTextureObject> Source;        // RGBA16F, grid order: light scattered once
   vtkSmartPointer<vtkTextureObject> Fluence[2];    // RGBA16F, coarse grid: diffusion ping-pong
+  vtkSmartPointer<vtkTextureObject> CoarseMedium;  // RGBA16F, coarse grid: albedo, sigma_t
+  vtkSmartPointer<vtkTextureObject> CoarseSource;  // RGBA16F, coarse grid: light scattered once
   vtkSmartPointer<vtkTextureObject> Kernel;        // RGBA32F, photons x materials
   vtkSmartPointer<vtkTextureObject> Materials;     // R32F, material index over the scalar
   vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
   std::unique_ptr<vtkOpenGLQuadHelper> Sweep;
   std::unique_ptr<vtkOpenGLQuadHelper> Gather;
+  std::unique_ptr<vtkOpenGLQuadHelper> Coarsen;
   std::unique_ptr<vtkOpenGLQuadHelper> Diffuse;
   std::unique_ptr<vtkOpenGLQuadHelper> Combine;
   vtkOpenGLRenderWindow* Context = nullptr;
@@ -143,7 +147,7 @@ struct vtkScattererTransportVolume::vtkInternals
   {
     for (auto* t : { &this->LightTexture, &this->Transmittance, &this->Slices[0], &this->Slices[1],
            &this->Medium, &this->Kernel, &this->Materials, &this->Source, &this->Fluence[0],
-           &this->Fluence[1] })
+           &this->Fluence[1], &this->CoarseMedium, &this->CoarseSource })
     {
       if (*t)
       {
@@ -156,7 +160,7 @@ struct vtkScattererTransportVolume::vtkInternals
       this->Sweep->ReleaseGraphicsResources(window);
       this->Sweep.reset();
     }
-    for (auto* quad : { &this->Gather, &this->Diffuse, &this->Combine })
+    for (auto* quad : { &this->Gather, &this->Coarsen, &this->Diffuse, &this->Combine })
     {
       if (*quad)
       {
@@ -196,7 +200,7 @@ struct vtkScattererTransportVolume::vtkInternals
   void SetCommonUniforms(vtkShaderProgram* program, const Inputs& in);
   bool SweepLight(const Inputs& in, const Light& light, std::string& why);
   void GatherLight(const Inputs& in, const Light& light, bool first);
-  bool SpreadMultipleScattering(const Inputs& in, std::string& why);
+  bool AddScatteredAndAmbientLight(const Inputs& in, std::string& why);
 };
 
 vtkScattererTransportVolume::vtkScattererTransportVolume()
@@ -245,8 +249,8 @@ size_t vtkScattererTransportVolume::GetGPUBytes() const
   const size_t transmittance = // R16F
     static_cast<size_t>(in.TransmittanceDims[0]) * in.TransmittanceDims[1] * in.TransmittanceDims[2] * 2;
   const size_t slices = 2 * static_cast<size_t>(in.SliceDims[0]) * in.SliceDims[1] * 2;
-  const size_t coarse = // two RGBA16F diffusion grids
-    2 * static_cast<size_t>(in.CoarseDims[0]) * in.CoarseDims[1] * in.CoarseDims[2] * 8;
+  const size_t coarse = // four RGBA16F coarse grids: two for the iteration, the medium, the source
+    4 * static_cast<size_t>(in.CoarseDims[0]) * in.CoarseDims[1] * in.CoarseDims[2] * 8;
   return 2 * light + transmittance + slices + coarse; // light and source alike
 }
 
@@ -490,16 +494,7 @@ void vtkScattererTransportVolume::vtkInternals::GatherLight(
   program->SetUniformi("st_kernelCount", in.KernelWidth);
   program->SetUniformi("st_bleed", in.Bleed ? 1 : 0);
   program->SetUniformi("st_boundary", in.Boundary ? 1 : 0);
-  // The ambient-occlusion radius in grid units along each grid axis.
-  float reach[3];
-  for (int a = 0; a < 3; ++a)
-  {
-    const double texel = this->TexelLength(a);
-    reach[a] = texel > 0.0 ? static_cast<float>(in.AmbientRadius / texel) : 0.0f;
-  }
-  program->SetUniform3f("st_aoReach", reach);
   program->SetUniform3f("st_lightColor", light.Color);
-  program->SetUniform3f("st_lightAmbient", light.Ambient);
   program->SetUniform3f("st_lightPosition", light.Position);
   program->SetUniform3f("st_lightFocalDirection", light.FocalDirection);
   program->SetUniformi("st_lightPositional", light.Positional ? 1 : 0);
@@ -544,7 +539,7 @@ void vtkScattererTransportVolume::vtkInternals::GatherLight(
   in.Volume->Deactivate();
 }
 
-bool vtkScattererTransportVolume::vtkInternals::SpreadMultipleScattering(const Inputs& in, std::string& why)
+bool vtkScattererTransportVolume::vtkInternals::AddScatteredAndAmbientLight(const Inputs& in, std::string& why)
 {
   // The coarse grid: fine texels 2c + CoarseToGrid and the next one, anchored like the
   // fine grid (to even global fine indices) so pieces share it.
@@ -560,12 +555,13 @@ bool vtkScattererTransportVolume::vtkInternals::SpreadMultipleScattering(const I
     this->Fluence[0]->GetHeight() != static_cast<unsigned int>(this->CoarseDims[1]) ||
     this->Fluence[0]->GetDepth() != static_cast<unsigned int>(this->CoarseDims[2]))
   {
-    for (auto& fluence : this->Fluence)
+    for (auto* grid : { &this->Fluence[0], &this->Fluence[1], &this->CoarseMedium,
+           &this->CoarseSource })
     {
-      fluence = this->NewTexture(true, vtkTextureObject::ClampToEdge);
-      fluence->SetInternalFormat(GL_RGBA16F);
-      fluence->SetFormat(GL_RGBA);
-      if (!fluence->Allocate3D(this->CoarseDims[0], this->CoarseDims[1], this->CoarseDims[2], 4, VTK_FLOAT))
+      *grid = this->NewTexture(true, vtkTextureObject::ClampToEdge);
+      (*grid)->SetInternalFormat(GL_RGBA16F);
+      (*grid)->SetFormat(GL_RGBA);
+      if (!(*grid)->Allocate3D(this->CoarseDims[0], this->CoarseDims[1], this->CoarseDims[2], 4, VTK_FLOAT))
       {
         why = "the diffusion textures could not be allocated";
         return false;
@@ -582,23 +578,47 @@ bool vtkScattererTransportVolume::vtkInternals::SpreadMultipleScattering(const I
     h[a] = static_cast<float>(2.0 * this->TexelLength(a));
   }
 
-  vtkShaderProgram* program = this->Diffuse->Program;
-  this->Context->GetShaderCache()->ReadyShaderProgram(program);
-  this->SetCommonUniforms(program, in);
-  program->SetUniform3f("st_coarseDims", coarseDims);
-  program->SetUniform3f("st_coarseToGrid", coarseToGrid);
-  program->SetUniform3f("st_h", h);
-  in.Volume->Activate();
-  program->SetUniformi("st_volume", in.Volume->GetTextureUnit());
-  this->Medium->Activate();
-  program->SetUniformi("st_medium", this->Medium->GetTextureUnit());
-  this->Source->Activate();
-  program->SetUniformi("st_source", this->Source->GetTextureUnit());
   vtkOpenGLState* state = this->Context->GetState();
   state->vtkglDisable(GL_BLEND);
   state->vtkglViewport(0, 0, this->CoarseDims[0], this->CoarseDims[1]);
+  {
+    vtkShaderProgram* coarsen = this->Coarsen->Program;
+    this->Context->GetShaderCache()->ReadyShaderProgram(coarsen);
+    this->SetCommonUniforms(coarsen, in);
+    coarsen->SetUniform3f("st_coarseDims", coarseDims);
+    coarsen->SetUniform3f("st_coarseToGrid", coarseToGrid);
+    coarsen->SetUniform3f("st_h", h);
+    coarsen->SetUniformi("st_aoSteps", 2);
+    in.Volume->Activate();
+    coarsen->SetUniformi("st_volume", in.Volume->GetTextureUnit());
+    this->Medium->Activate();
+    coarsen->SetUniformi("st_medium", this->Medium->GetTextureUnit());
+    this->Source->Activate();
+    coarsen->SetUniformi("st_source", this->Source->GetTextureUnit());
+    for (int z = 0; z < this->CoarseDims[2]; ++z)
+    {
+      AttachLayer(this->Framebuffer, 0, this->CoarseMedium, z);
+      AttachLayer(this->Framebuffer, 1, this->CoarseSource, z);
+      this->Framebuffer->ActivateDrawBuffers(2);
+      coarsen->SetUniformf("st_layer", static_cast<float>(z));
+      this->Coarsen->Render();
+    }
+    this->Framebuffer->RemoveColorAttachments(2);
+    this->Source->Deactivate();
+    this->Medium->Deactivate();
+    in.Volume->Deactivate();
+  }
+
+  vtkShaderProgram* program = this->Diffuse->Program;
+  this->Context->GetShaderCache()->ReadyShaderProgram(program);
+  program->SetUniform3f("st_coarseDims", coarseDims);
+  program->SetUniform3f("st_h", h);
+  this->CoarseMedium->Activate();
+  program->SetUniformi("st_coarseMedium", this->CoarseMedium->GetTextureUnit());
+  this->CoarseSource->Activate();
+  program->SetUniformi("st_coarseSource", this->CoarseSource->GetTextureUnit());
   int current = 0;
-  const int iterations = std::max(1, in.DiffusionIterations);
+  const int iterations = in.MultipleScattering > 0.0f ? std::max(1, in.DiffusionIterations) : 0;
   for (int i = 0; i < iterations; ++i)
   {
     vtkTextureObject* previous = this->Fluence[1 - current];
@@ -615,9 +635,8 @@ bool vtkScattererTransportVolume::vtkInternals::SpreadMultipleScattering(const I
     previous->Deactivate();
     current = 1 - current;
   }
-  this->Source->Deactivate();
-  this->Medium->Deactivate();
-  in.Volume->Deactivate();
+  this->CoarseSource->Deactivate();
+  this->CoarseMedium->Deactivate();
 
   // Add the fluence to the light each fine texel receives.
   vtkShaderProgram* combine = this->Combine->Program;
@@ -625,6 +644,17 @@ bool vtkScattererTransportVolume::vtkInternals::SpreadMultipleScattering(const I
   vtkTextureObject* fluence = this->Fluence[1 - current];
   fluence->Activate();
   combine->SetUniformi("st_fluence", fluence->GetTextureUnit());
+  this->CoarseSource->Activate();
+  combine->SetUniformi("st_occlusion", this->CoarseSource->GetTextureUnit());
+  float ambient[3] = { 0, 0, 0 };
+  for (const auto& light : in.Lights)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      ambient[c] += light.Ambient[c];
+    }
+  }
+  combine->SetUniform3f("st_ambient", ambient);
   const float dims[3] = { static_cast<float>(this->Dims[0]), static_cast<float>(this->Dims[1]),
     static_cast<float>(this->Dims[2]) };
   combine->SetUniform3f("st_gridDims", dims);
@@ -642,6 +672,7 @@ bool vtkScattererTransportVolume::vtkInternals::SpreadMultipleScattering(const I
     this->Combine->Render();
   }
   this->Framebuffer->RemoveColorAttachments(1);
+  this->CoarseSource->Deactivate();
   fluence->Deactivate();
   state->vtkglDisable(GL_BLEND);
   return true;
@@ -657,7 +688,7 @@ std::string KeyOf(const vtkScattererTransportVolume::Inputs& in)
     << '|' << in.ExtinctionScale << '|' << in.Downsample << '|' << in.IndexOrigin[0] << ','
     << in.IndexOrigin[1] << ',' << in.IndexOrigin[2] << '|' << in.Cropping << ','
     << in.CropFlags << '|' << in.Bleed << in.Boundary << '|' << in.MultipleScattering << ','
-    << in.DiffusionIterations << ',' << in.AmbientRadius << '|' << in.KernelWidth;
+    << in.DiffusionIterations << '|' << in.KernelWidth;
   for (double v : in.TexToWorld)
   {
     k << ',' << v;
@@ -792,16 +823,18 @@ bool vtkScattererTransportVolume::Update(
       window, vs.c_str(), WithCommon(scatterer_transport_sweep).c_str(), ""));
     s.Gather.reset(new vtkOpenGLQuadHelper(
       window, vs.c_str(), WithCommon(scatterer_transport_gather).c_str(), ""));
-    s.Diffuse.reset(new vtkOpenGLQuadHelper(
-      window, vs.c_str(), WithCommon(scatterer_transport_diffuse).c_str(), ""));
+    s.Coarsen.reset(new vtkOpenGLQuadHelper(
+      window, vs.c_str(), WithCommon(scatterer_transport_coarsen).c_str(), ""));
+    s.Diffuse.reset(new vtkOpenGLQuadHelper(window, vs.c_str(), scatterer_transport_diffuse, ""));
     s.Combine.reset(new vtkOpenGLQuadHelper(window, vs.c_str(), scatterer_transport_combine, ""));
-    if (!s.Sweep->Program || !s.Gather->Program || !s.Diffuse->Program || !s.Combine->Program)
+    if (!s.Sweep->Program || !s.Gather->Program || !s.Coarsen->Program || !s.Diffuse->Program ||
+      !s.Combine->Program)
     {
       why = "the transport shaders failed to compile on this OpenGL implementation";
-      s.Sweep.reset();
-      s.Gather.reset();
-      s.Diffuse.reset();
-      s.Combine.reset();
+      for (auto* quad : { &s.Sweep, &s.Gather, &s.Coarsen, &s.Diffuse, &s.Combine })
+      {
+        quad->reset();
+      }
       return false;
     }
     s.Framebuffer->SetContext(window);
@@ -850,10 +883,11 @@ bool vtkScattererTransportVolume::Update(
       s.GatherLight(in, in.Lights[l], l == 0);
     }
   }
-  if (ok && in.MultipleScattering > 0.0f)
+  if (ok)
   {
-    ok = s.SpreadMultipleScattering(in, why);
+    ok = s.AddScatteredAndAmbientLight(in, why);
   }
+
   if (!ok)
   {
     s.Key.clear();

@@ -93,8 +93,7 @@ public:
     bool Bleed = true;
     bool Boundary = true;
     float MultipleScattering = 1;      ///< strength of the multiple-scattering term (0: none)
-    int DiffusionIterations = 24;      ///< Jacobi iterations of the diffusion solve
-    float AmbientRadius = 1;           ///< world units the ambient occlusion averages over
+    int DiffusionIterations = 8;       ///< Jacobi iterations of the diffusion solve
   };
 
   /**

@@ -21,7 +21,7 @@
 //ST::IF TRANSPORT
         // The light transport volume: the light this point receives, summed over
         // the lights (global shadows, template in-scattering, multiple scattering,
-        // VTK's ambient term occluded like the light around the point).
+        // VTK's ambient term occluded like the light): one texture read.
         st_F = texture3D(st_transport, g_dataPos * st_transportScale + st_transportOffset).rgb;
         // Highlight compression: light above st_knee approaches 1 smoothly instead of
         // clipping (multiple scattering makes dense, white materials glow well above

@@ -1,7 +1,7 @@
   //VTK::Shading::Init
-  // Scatterer-template illumination varies on the scale of the template
-  // radius, so along a ray it is evaluated every st_interval samples and
-  // reused in between (and evaluated at once when the material changes).
+  // Per sample: the illumination varies on the scale of the template radius,
+  // so along a ray it is evaluated every st_interval samples and reused in
+  // between (and evaluated at once when the material changes).
   // The step counter is the same for all rays at a given loop iteration, so
   // neighbouring rays evaluate together (SIMD-friendly).
   vec3 st_F = vec3(1.0);

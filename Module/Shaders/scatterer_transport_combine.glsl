@@ -1,12 +1,16 @@
 //VTK::System::Dec
 //VTK::Output::Dec
 //============================================================================
-// Light transport volume, pass 4: the multiply scattered light (the diffusion's
-// fluence, linearly interpolated from the coarse grid, times MultipleScattering)
-// added to the light each fine texel receives (by blending).
+// Light transport volume, pass 4: added to the light each fine texel receives (by
+// blending), both linearly interpolated from the coarse grid:
+// - the multiply scattered light: the diffusion's fluence times MultipleScattering;
+// - VTK's ambient term (ka x the lights' ambient colours) times its occlusion
+//   (scatterer_transport_coarsen.glsl).
 //============================================================================
 in vec2 texCoord;
-uniform sampler3D st_fluence;      // coarse grid, rgb
+uniform sampler3D st_fluence;      // coarse grid, rgb (unused when st_strength is 0)
+uniform sampler3D st_occlusion;    // coarse grid, a: the ambient light's transmittance
+uniform vec3 st_ambient;
 uniform float st_layer;
 uniform vec3 st_gridDims;
 uniform vec3 st_coarseDims;
@@ -18,5 +22,7 @@ void main()
   vec3 j = vec3(floor(texCoord * st_gridDims.xy), st_layer);
   // Coarse texel c's centre is at fine position c * 2 + st_coarseToGrid + 0.5.
   vec3 c = (j - st_coarseToGrid - vec3(0.5)) / 2.0;
-  gl_FragData[0] = vec4(st_strength * texture(st_fluence, (c + vec3(0.5)) / st_coarseDims).rgb, 1.0);
+  vec3 coarse = (c + vec3(0.5)) / st_coarseDims;
+  vec3 scattered = st_strength > 0.0 ? st_strength * texture(st_fluence, coarse).rgb : vec3(0.0);
+  gl_FragData[0] = vec4(scattered + st_ambient * texture(st_occlusion, coarse).a, 1.0);
 }

@@ -13,8 +13,6 @@
 //   material (colour bleeding, section 3.3). Such a photon's offset is rescaled by
 //   the speed ratio n_m / n_mp and its weight by the opacity ratio (section 3.4).
 // - a_l(p): VTK's attenuation and spot cone of a positional light, 1 otherwise.
-// - VTK's ambient term is occluded like the light around p: times T_l averaged over
-//   a sphere of the diffusion length (the centre and six points on the axes).
 // A second output collects the source of multiple scattering, the light scattered
 // once at p: S(p) = sigma_t(p) albedo(p) sum_l E_l a_l(p) T_l(p)  (the diffusion
 // passes spread it: scatterer_transport_diffuse.glsl).
@@ -34,9 +32,7 @@ uniform float st_speedRatio[ST_MAX_MATERIALS * ST_MAX_MATERIALS];
 uniform float st_opacityRatio[ST_MAX_MATERIALS * ST_MAX_MATERIALS];
 uniform int st_bleed;
 uniform int st_boundary;
-uniform vec3 st_aoReach;           // the ambient-occlusion radius in grid units along each axis
 uniform vec3 st_lightColor;
-uniform vec3 st_lightAmbient;
 uniform vec3 st_lightPosition;
 uniform vec3 st_lightFocalDirection; // positional: unit vector from the light to its focal point
 uniform int st_lightPositional;
@@ -65,15 +61,6 @@ void main()
   vec3 t = st_gridToTexture(j);
   int m = st_materialAt(t);
   vec3 single = vec3(st_T(j));
-  // T averaged over a sphere around p: the centre and six points on the axes.
-  float around = st_T(j);
-  for (int a = 0; a < 3; ++a)
-  {
-    vec3 d = vec3(0.0);
-    d[a] = st_aoReach[a];
-    around += st_T(j + d) + st_T(j - d);
-  }
-  around /= 7.0;
   if (m >= 0)
   {
     vec3 sum = vec3(0.0);
@@ -115,7 +102,7 @@ void main()
       a *= c < st_lightConeCos ? 0.0 : pow(max(c, 0.0), st_lightExponent);
     }
   }
-  gl_FragData[0] = vec4(a * (st_lightColor * single + st_lightAmbient * around), 1.0);
+  gl_FragData[0] = vec4(a * st_lightColor * single, 1.0);
   vec4 medium = st_mediumAt(t);
   gl_FragData[1] = vec4(medium.a * medium.rgb * a * st_lightColor * st_T(j), 1.0);
 }

@@ -52,7 +52,7 @@ void main()
     for (int i = 0; i < st_substeps; ++i)
     {
       vec3 g = j + stepGrid * ((float(i) + 0.5) / float(st_substeps));
-      tau += st_sigmaAt(st_gridToTexture(g));
+      tau += st_attenuationAt(st_gridToTexture(g));
     }
     tau *= len / float(st_substeps);
     // Outside the grid the light has crossed no matter: the border reads 1.
