@@ -7,9 +7,14 @@
 // the eight), its source the mean of theirs (one linear fetch at the block centre).
 //
 // Its alpha also carries the ambient occlusion of the block centre p: VTK's ambient
-// light comes from every direction, so it is occluded by the medium around p,
-// averaged over the six axis directions, each marched over st_aoSteps coarse voxels:
-//   AO(p) = 1/6 sum_d exp(-h_d sum_k sigma_t(p + (k + 1/2) h_d d))      (Beer-Lambert)
+// light comes from every direction, so it is occluded by the medium around p.
+// Along each axis, the more open of its two directions counts (a surface is open
+// on one side, like the hemisphere above it), each marched over st_aoSteps coarse
+// voxels from the next one on (the block's own medium is what the ambient light
+// lights, not what occludes it; so a plate thinner than a block is open on its
+// free side):
+//   AO(p) = 1/3 sum_a max_(d = +-e_a) exp(-h_a sum_(k=1..n) sigma_t(p + k h_a d))
+// so free space gets 1, a flat surface at least 1/3 and a point deep inside 0.
 //============================================================================
 //VTK::Transport::Common
 in vec2 texCoord;
@@ -32,17 +37,22 @@ void main()
   }
   vec3 centre = fine + vec3(0.5);
   float open = 0.0;
-  for (int d = 0; d < 6; ++d)
+  for (int a = 0; a < 3; ++a)
   {
-    vec3 axis = vec3(0.0);
-    axis[d / 2] = (d % 2 == 0) ? 2.0 : -2.0; // one coarse voxel in fine grid units
-    float tau = 0.0;
-    for (int k = 0; k < st_aoSteps; ++k)
+    float best = 0.0;
+    for (int side = 0; side < 2; ++side)
     {
-      tau += st_attenuationAt(st_gridToTexture(centre + (float(k) + 0.5) * axis));
+      vec3 axis = vec3(0.0);
+      axis[a] = side == 0 ? 2.0 : -2.0; // one coarse voxel in fine grid units
+      float tau = 0.0;
+      for (int k = 0; k < st_aoSteps; ++k)
+      {
+        tau += st_attenuationAt(st_gridToTexture(centre + float(k + 1) * axis));
+      }
+      best = max(best, exp(-tau * st_h[a]));
     }
-    open += exp(-tau * st_h[d / 2]);
+    open += best;
   }
   gl_FragData[0] = medium / 8.0;
-  gl_FragData[1] = vec4(texture(st_source, (fine + vec3(1.0)) / st_gridDims).rgb, open / 6.0);
+  gl_FragData[1] = vec4(texture(st_source, (fine + vec3(1.0)) / st_gridDims).rgb, open / 3.0);
 }
