@@ -756,7 +756,7 @@ std::string vtkScattererTemplateVolumeMapper::UpdateTransport(
         static_cast<float>(-(n[0] * o[0] + n[1] * o[1] + n[2] * o[2])) });
     }
   }
-  t.Cropping = this->GetCropping() != 0;
+  t.Cropping = this->GetCropping() != 0 && !this->CroppedMatterCastsShadows;
   t.CropFlags = this->GetCroppingRegionFlags();
   for (int a = 0; a < 3; ++a)
   {
@@ -963,6 +963,7 @@ void vtkScattererTemplateVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ThinPartCheckEnabled: " << onOff(this->ThinPartCheckEnabled) << "\n";
   os << indent << "BoundaryRefractionEnabled: " << onOff(this->BoundaryRefractionEnabled) << "\n";
   os << indent << "TemplateBlendingEnabled: " << onOff(this->TemplateBlendingEnabled) << "\n";
+  os << indent << "CroppedMatterCastsShadows: " << onOff(this->CroppedMatterCastsShadows) << "\n";
   os << indent << "ShaderPathSelection: "
      << (this->ShaderPathSelection == AUTOMATIC ? "Automatic" : "AsRequested") << "\n";
   os << indent << "MaterialDerivationRange: ";

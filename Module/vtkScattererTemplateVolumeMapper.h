@@ -165,6 +165,17 @@ public:
   vtkGetMacro(MultipleScattering, double);
   ///@}
 
+  ///@{
+  /**
+   * Off (default): cropped and clipped-away material neither shows nor casts
+   * shadow. On: cropping only hides voxels from view, and they still carry light
+   * (clipping planes keep removing matter). For a piece of a split volume, whose
+   * ghost layers are hidden by cropping yet lie between the light and the piece's
+   * own voxels; the ParaView plugin switches it on when it crops to the owned part.
+   */
+  vtkScattererSetSwitchMacro(CroppedMatterCastsShadows);
+  ///@}
+
   /** Transport mode: milliseconds the last rebuild took (0 if the frame reused it). */
   double GetLastTransportBuildMilliseconds() const;
 
@@ -349,6 +360,7 @@ protected:
   bool BoundaryRefractionEnabled = true;
   bool TemplateBlendingEnabled = false;
   int ShaderPathSelection = AUTOMATIC;
+  bool CroppedMatterCastsShadows = false;
   int IlluminationMode = TRANSPORT;
   int TransportScale = 2;
   int InteractiveTransportScale = 4;

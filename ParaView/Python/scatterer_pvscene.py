@@ -29,10 +29,12 @@ CT_HEAD_SCENE = {
     "scalar_opacity_unit_distance": 1.0,
 }
 
-# A synthetic scene whose lighting depends on voxels across a piece border: a
-# translucent slab (value 100) with an opaque sheet (value 250) just before x = 64,
-# over the lower half of z, lit along +x and seen from the side. Split into two
-# ranks along x, the shadow the sheet casts falls on the other rank's piece.
+# A synthetic scene whose lighting depends on voxels across a piece border: empty
+# space, then from x = 52 a translucent slab (value 100) with an opaque sheet (value
+# 250) just before x = 64, over the lower half of z, lit along +x and seen from the
+# side. Split into two ranks along x, the shadow the sheet casts falls on the other
+# rank's piece. Everything between the light and that piece's ghost layers is empty,
+# so a piece with ghost layers sees all the matter the light crosses.
 SPLIT_SHADOW_DIMS = (128, 40, 48)
 SPLIT_SHADOW_SCENE = {
     "camera": {"position": [63.5, -260.0, 23.5], "focal_point": [63.5, 19.5, 23.5],
@@ -49,7 +51,8 @@ def write_split_shadow_volume(folder):
     """Writes the split-shadow volume as <folder>/split-shadow.mhd (+ .raw)."""
     import numpy
     nx, ny, nz = SPLIT_SHADOW_DIMS
-    volume = numpy.full((nz, ny, nx), 100, dtype=numpy.uint8)  # [z][y][x], x fastest
+    volume = numpy.zeros((nz, ny, nx), dtype=numpy.uint8)  # [z][y][x], x fastest
+    volume[:, :, 52:] = 100
     volume[:nz // 2, :, 58:62] = 250
     os.makedirs(folder, exist_ok=True)
     volume.tofile(os.path.join(folder, "split-shadow.raw"))

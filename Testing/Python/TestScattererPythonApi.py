@@ -55,8 +55,9 @@ check(m.IsA("vtkOpenGLGPUVolumeRayCastMapper"), "the mapper is a vtkOpenGLGPUVol
 defaults = {
     "IlluminationEnabled": True, "ShadowsEnabled": True, "ColorBleedingEnabled": True,
     "ThinPartCheckEnabled": True, "BoundaryRefractionEnabled": True,
-    "TemplateBlendingEnabled": False, "IlluminationMode": 0, "CacheScale": 2,
-    "CacheTemplatesPerVoxel": 4, "ShaderPathSelection": 0, "TemplateRadius": 0.0,
+    "TemplateBlendingEnabled": False, "IlluminationMode": 0, "TransportScale": 2,
+    "InteractiveTransportScale": 4, "MultipleScattering": 1.0,
+    "ShaderPathSelection": 0, "TemplateRadius": 0.0,
     "TemplatesPerMaterial": 8, "PhotonCap": 24, "OcclusionStrength": 1.0,
     "IlluminationInterval": 4, "LongRangeMultiple": 3.0, "PhotonThreshold": 0.002,
     "GeneratorThreshold": 0.01,
@@ -64,8 +65,9 @@ defaults = {
 values = {
     "IlluminationEnabled": False, "ShadowsEnabled": False, "ColorBleedingEnabled": False,
     "ThinPartCheckEnabled": False, "BoundaryRefractionEnabled": False,
-    "TemplateBlendingEnabled": True, "IlluminationMode": 1, "CacheScale": 4,
-    "CacheTemplatesPerVoxel": 16, "ShaderPathSelection": 1, "TemplateRadius": 12.5,
+    "TemplateBlendingEnabled": True, "IlluminationMode": 1, "TransportScale": 4,
+    "InteractiveTransportScale": 8, "MultipleScattering": 0.5,
+    "ShaderPathSelection": 1, "TemplateRadius": 12.5,
     "TemplatesPerMaterial": 3, "PhotonCap": 100, "OcclusionStrength": 0.5,
     "IlluminationInterval": 2, "LongRangeMultiple": 5.0, "PhotonThreshold": 0.1,
     "GeneratorThreshold": 0.05,
@@ -90,7 +92,7 @@ m.SetShaderPathSelectionToAsRequested()
 check(m.GetShaderPathSelection() == m.AS_REQUESTED, "AsRequested")
 check(m.GetOcclusionStrengthMinValue() == 0.0 and m.GetOcclusionStrengthMaxValue() == 100.0,
       "OcclusionStrength range")
-check(m.GetTransportScaleMinValue() == 1 and m.GetTransportScaleMaxValue() == 8, "CacheScale range")
+check(m.GetTransportScaleMinValue() == 1 and m.GetTransportScaleMaxValue() == 8, "TransportScale range")
 
 # --- clamping warns, NaN is an error and keeps the value ----------------------------------
 msgs = Messages(m)
@@ -106,7 +108,7 @@ check(m.GetOcclusionStrength() == 100.0, "NaN keeps the old value")
 check(len(msgs.errors) == 1 and "NaN" in msgs.errors[0], "one NaN error: %r" % msgs.errors)
 msgs.clear()
 m.SetTransportScale(0)
-check(m.GetTransportScale() == 1 and len(msgs.warnings) == 1, "CacheScale clamped to 1 with a warning")
+check(m.GetTransportScale() == 1 and len(msgs.warnings) == 1, "TransportScale clamped to 1 with a warning")
 msgs.clear()
 m.SetPhotonCap(24)
 check(not msgs.warnings and not msgs.errors, "an in-range value is silent")

@@ -58,7 +58,9 @@ vtkScattererForward(ThinPartCheckEnabled, bool);
 vtkScattererForward(BoundaryRefractionEnabled, bool);
 vtkScattererForward(TemplateBlendingEnabled, bool);
 vtkScattererForward(IlluminationMode, int);
-vtkScattererForward(CacheScale, int);
+vtkScattererForward(TransportScale, int);
+vtkScattererForward(InteractiveTransportScale, int);
+vtkScattererForward(MultipleScattering, double);
 vtkScattererForward(TemplateRadius, double);
 vtkScattererForward(TemplatesPerMaterial, int);
 vtkScattererForward(PhotonCap, int);
@@ -178,6 +180,10 @@ void vtkScattererVolumeRepresentation::UpdateMapperParameters()
   {
     this->GetScattererMapper()->ClearMaterialDerivationRange();
   }
+  // Cropping to the owned part hides the ghost layers, which must still carry light
+  // (they lie between the light and the owned voxels). With the user's cropping too,
+  // the cropped-away matter then casts shadows as well (docs/paraview.md).
+  this->GetScattererMapper()->SetCroppedMatterCastsShadows(this->RendersOwnedPartOnly);
   if (!this->RendersOwnedPartOnly)
   {
     return;

@@ -48,6 +48,8 @@ public:
   void SetTemplateBlendingEnabled(bool enabled);
   void SetIlluminationMode(int mode);
   void SetTransportScale(int scale);
+  void SetInteractiveTransportScale(int scale);
+  void SetMultipleScattering(double strength);
   void SetTemplateRadius(double radius);
   void SetTemplatesPerMaterial(int count);
   void SetPhotonCap(int cap);
