@@ -128,7 +128,8 @@ struct vtkScattererTransportVolume::vtkInternals
   int SliceDims[2] = { 0, 0 };
   int FirstIndex[3] = { 0, 0, 0 }; // global index (in grid texels) of grid texel 0
   int CoarseDims[3] = { 0, 0, 0 };
-  int CoarseToGrid[3] = { 0, 0, 0 }; // coarse texel c covers fine texels 2c + this, +1
+  int CoarseToGrid[3] = { 0, 0, 0 }; // coarse texel c covers fine texels Block c + this, + [0, Block)
+  int Block = 2;                     // fine texels per coarse texel along each axis
   float TexScale[3] = { 1, 1, 1 };
   float TexOffset[3] = { 0, 0, 0 };
   double LastMs = 0.0;
@@ -541,15 +542,19 @@ void vtkScattererTransportVolume::vtkInternals::GatherLight(
 
 bool vtkScattererTransportVolume::vtkInternals::AddScatteredAndAmbientLight(const Inputs& in, std::string& why)
 {
-  // The coarse grid: fine texels 2c + CoarseToGrid and the next one, anchored like the
-  // fine grid (to even global fine indices) so pieces share it.
+  // The coarse grid: blocks of `block` fine texels, so that a coarse texel spans about
+  // 4 volume voxels whatever the transport scale (the diffusion's reach per iteration
+  // then stays the same), anchored like the fine grid (to multiples of `block` in
+  // global fine indices) so pieces share it.
+  const int block = std::max(1, 4 / std::max(1, in.Downsample));
+  this->Block = block;
   auto floorDiv = [](int a, int b) { return a >= 0 ? a / b : -((-a + b - 1) / b); };
   for (int a = 0; a < 3; ++a)
   {
     const int first = this->FirstIndex[a];
-    const int coarseFirst = floorDiv(first, 2);
-    this->CoarseToGrid[a] = 2 * coarseFirst - first;
-    this->CoarseDims[a] = floorDiv(first + this->Dims[a] - 1, 2) - coarseFirst + 1;
+    const int coarseFirst = floorDiv(first, block);
+    this->CoarseToGrid[a] = block * coarseFirst - first;
+    this->CoarseDims[a] = floorDiv(first + this->Dims[a] - 1, block) - coarseFirst + 1;
   }
   if (!this->Fluence[0] || this->Fluence[0]->GetWidth() != static_cast<unsigned int>(this->CoarseDims[0]) ||
     this->Fluence[0]->GetHeight() != static_cast<unsigned int>(this->CoarseDims[1]) ||
@@ -575,7 +580,7 @@ bool vtkScattererTransportVolume::vtkInternals::AddScatteredAndAmbientLight(cons
   float h[3];
   for (int a = 0; a < 3; ++a)
   {
-    h[a] = static_cast<float>(2.0 * this->TexelLength(a));
+    h[a] = static_cast<float>(block * this->TexelLength(a));
   }
 
   vtkOpenGLState* state = this->Context->GetState();
@@ -589,6 +594,7 @@ bool vtkScattererTransportVolume::vtkInternals::AddScatteredAndAmbientLight(cons
     coarsen->SetUniform3f("st_coarseToGrid", coarseToGrid);
     coarsen->SetUniform3f("st_h", h);
     coarsen->SetUniformi("st_aoSteps", 2);
+    coarsen->SetUniformi("st_block", block);
     in.Volume->Activate();
     coarsen->SetUniformi("st_volume", in.Volume->GetTextureUnit());
     this->Medium->Activate();
@@ -660,6 +666,7 @@ bool vtkScattererTransportVolume::vtkInternals::AddScatteredAndAmbientLight(cons
   combine->SetUniform3f("st_gridDims", dims);
   combine->SetUniform3f("st_coarseDims", coarseDims);
   combine->SetUniform3f("st_coarseToGrid", coarseToGrid);
+  combine->SetUniformf("st_block", static_cast<float>(block));
   combine->SetUniformf("st_strength", in.MultipleScattering);
   state->vtkglEnable(GL_BLEND);
   state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);

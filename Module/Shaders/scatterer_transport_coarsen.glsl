@@ -2,9 +2,11 @@
 //VTK::Output::Dec
 //============================================================================
 // Light transport volume, pass 3a: the medium and the multiple-scattering source
-// on the diffusion's coarse grid (one layer per draw). A coarse texel covers 2x2x2
-// fine texels: its medium (albedo, sigma_t) is the mean of theirs (st_mediumAt at
-// the eight), its source the mean of theirs (one linear fetch at the block centre).
+// on the diffusion's coarse grid (one layer per draw). A coarse texel covers a block
+// of st_block^3 fine texels (st_block: 4, 2 or 1, so that a coarse texel spans about
+// 4 volume voxels whatever TransportScale): its medium (albedo, sigma_t) is the mean
+// of theirs (st_mediumAt at each), its source the mean of theirs (linear fetches at
+// the centres of 2x2x2 sub-blocks, or one texel).
 //
 // Its alpha also carries the ambient occlusion of the block centre p: VTK's ambient
 // light comes from every direction, so it is occluded by the medium around p.
@@ -21,21 +23,39 @@ in vec2 texCoord;
 uniform sampler3D st_source;       // fine grid: rgb = the light scattered once
 uniform float st_layer;
 uniform vec3 st_coarseDims;
-uniform vec3 st_coarseToGrid;      // coarse texel c covers fine positions c * 2 + st_coarseToGrid, + 1
+uniform vec3 st_coarseToGrid;      // coarse texel c covers fine positions c * st_block + st_coarseToGrid + [0, st_block)
+uniform int st_block;
 uniform vec3 st_h;                 // coarse texel size along each axis, world units
 uniform int st_aoSteps;
 
 void main()
 {
   vec3 c = vec3(floor(texCoord * st_coarseDims.xy), st_layer);
-  vec3 fine = c * 2.0 + st_coarseToGrid;
+  float b = float(st_block);
+  vec3 fine = c * b + st_coarseToGrid;
   vec4 medium = vec4(0.0);
-  for (int k = 0; k < 8; ++k)
+  for (int k = 0; k < st_block * st_block * st_block; ++k)
   {
-    vec3 o = vec3(float(k & 1), float((k >> 1) & 1), float((k >> 2) & 1));
+    vec3 o = vec3(float(k % st_block), float((k / st_block) % st_block), float(k / (st_block * st_block)));
     medium += st_mediumAt(st_gridToTexture(fine + o));
   }
-  vec3 centre = fine + vec3(0.5);
+  medium /= b * b * b;
+  vec3 source = vec3(0.0);
+  if (st_block == 1)
+  {
+    source = texelFetch(st_source, ivec3(fine), 0).rgb;
+  }
+  else
+  {
+    int halves = st_block / 2;
+    for (int k = 0; k < halves * halves * halves; ++k)
+    {
+      vec3 o = 2.0 * vec3(float(k % halves), float((k / halves) % halves), float(k / (halves * halves)));
+      source += texture(st_source, (fine + o + vec3(1.0)) / st_gridDims).rgb;
+    }
+    source /= float(halves * halves * halves);
+  }
+  vec3 centre = fine + vec3(0.5 * (b - 1.0));
   float open = 0.0;
   for (int a = 0; a < 3; ++a)
   {
@@ -43,7 +63,7 @@ void main()
     for (int side = 0; side < 2; ++side)
     {
       vec3 axis = vec3(0.0);
-      axis[a] = side == 0 ? 2.0 : -2.0; // one coarse voxel in fine grid units
+      axis[a] = side == 0 ? b : -b; // one coarse voxel in fine grid units
       float tau = 0.0;
       for (int k = 0; k < st_aoSteps; ++k)
       {
@@ -53,6 +73,6 @@ void main()
     }
     open += best;
   }
-  gl_FragData[0] = medium / 8.0;
-  gl_FragData[1] = vec4(texture(st_source, (fine + vec3(1.0)) / st_gridDims).rgb, open / 3.0);
+  gl_FragData[0] = medium;
+  gl_FragData[1] = vec4(source, open / 3.0);
 }

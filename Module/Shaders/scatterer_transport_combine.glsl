@@ -15,13 +15,14 @@ uniform float st_layer;
 uniform vec3 st_gridDims;
 uniform vec3 st_coarseDims;
 uniform vec3 st_coarseToGrid;
+uniform float st_block;
 uniform float st_strength;
 
 void main()
 {
   vec3 j = vec3(floor(texCoord * st_gridDims.xy), st_layer);
-  // Coarse texel c's centre is at fine position c * 2 + st_coarseToGrid + 0.5.
-  vec3 c = (j - st_coarseToGrid - vec3(0.5)) / 2.0;
+  // Coarse texel c's centre is at fine position c * b + st_coarseToGrid + (b - 1) / 2.
+  vec3 c = (j - st_coarseToGrid - vec3(0.5 * (st_block - 1.0))) / st_block;
   vec3 coarse = (c + vec3(0.5)) / st_coarseDims;
   vec3 scattered = st_strength > 0.0 ? st_strength * texture(st_fluence, coarse).rgb : vec3(0.0);
   gl_FragData[0] = vec4(scattered + st_ambient * texture(st_occlusion, coarse).a, 1.0);

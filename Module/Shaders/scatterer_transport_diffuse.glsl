@@ -2,7 +2,7 @@
 //VTK::Output::Dec
 //============================================================================
 // Light transport volume, pass 3: multiple scattering by diffusion (one layer
-// per draw, st_iterations Jacobi sweeps on a grid twice as coarse; after vpt,
+// per draw, Jacobi sweeps on a coarse grid of about 4 voxels; after vpt,
 // Zbontar & Lesar, which carries multiple scattering by diffusion).
 //
 // The diffusion approximation of the light scattered more than once, per colour
