@@ -41,6 +41,8 @@ vtkSmartPointer<vtkGPUVolumeRayCastMapper> MakeMapper(const RenderOptions& o)
     mapper->SetOcclusionStrength(o.Strength);
   if (o.LongRange >= 1)
     mapper->SetLongRangeMultiple(o.LongRange);
+  if (o.MultipleScattering >= 0)
+    mapper->SetMultipleScattering(o.MultipleScattering);
   return mapper;
 }
 

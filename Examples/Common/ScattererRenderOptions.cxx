@@ -85,11 +85,11 @@ std::string RenderUsage()
          "                    functions; for CT data in HU)\n"
          "  --json            print one JSON object: settings, frame times (ms), output path\n"
          "Template illumination (--mode template):\n"
-         "  --shadows on|off  occlusion at photons: shadows, ambient occlusion (default on)\n"
+         "  --shadows on|off  occlusion: shadows (default on)\n"
          "  --bleeding on|off colour bleeding between materials (default on)\n"
-         "  --thin on|off     thin-part check along photon directions (default on)\n"
+         "  --thin on|off     per-sample: thin-part check toward the light (default on)\n"
          "  --boundary on|off Snell rescaling across material boundaries (default on)\n"
-         "  --blend on|off    average two templates per sample (default off)\n"
+         "  --blend on|off    per-sample: average two templates per sample (default off)\n"
          "  --paths auto|requested  shader code for what the scene needs (auto, default)\n"
          "                    or for every effect switched on\n"
          "  --illumination transport|per-sample  light transport volume built on the GPU and\n"
@@ -97,14 +97,18 @@ std::string RenderUsage()
          "                    photon test in the shader at every sample\n"
          "  --transport-scale N  transport: volume voxels per transport voxel per axis,\n"
          "                    1..8 (default 2)\n"
-         "  --photons N       photon cap per template, 1..1024 (default 24)\n"
+         "  --multiple-scattering K  transport: multiple-scattering strength, 0..16\n"
+         "                    (default 1, physical; 0: single scattering only)\n"
+         "  --photons N       photons per template (per-sample) or kernel (transport),\n"
+         "                    1..1024 (default 24)\n"
          "  --templates N     templates per material, 1..64 (default 8)\n"
          "  --interval N      per-sample: ray samples between photon evaluations, 1..64\n"
          "                    (default 4)\n"
          "  --radius R        template radius in world units, > 0 (default 10 x spacing)\n"
-         "  --threshold T     photon-loop cut-off on transmittance x intensity, 0..1\n"
+         "  --threshold T     per-sample: photon-loop cut-off on transmittance x intensity, 0..1\n"
          "  --strength S      occlusion strength, 0..100 (default 1)\n"
-         "  --long-range M    thin-part check distance in photon offsets, 1..64 (default 3)\n"
+         "  --long-range M    per-sample: thin-part check distance in photon offsets, 1..64\n"
+         "                    (default 3)\n"
          "  --help            this text\n";
 }
 
@@ -240,17 +244,19 @@ bool ParseRenderOptions(int argc, char* argv[], RenderOptions& o, std::string& e
       }
     }
     else if (arg == "--radius" || arg == "--threshold" || arg == "--strength" ||
-      arg == "--long-range")
+      arg == "--long-range" || arg == "--multiple-scattering")
     {
       if (!value(v))
         return false;
       const double lo = arg == "--long-range" ? 1.0 : arg == "--radius" ? 1e-9 : 0.0;
       const double hi = arg == "--threshold" ? 1.0 : arg == "--strength" ? 100.0
         : arg == "--long-range"              ? 64.0
+        : arg == "--multiple-scattering"     ? 16.0
                                              : 1e9;
       double& target = arg == "--radius" ? o.Radius
         : arg == "--threshold"           ? o.Threshold
         : arg == "--strength"            ? o.Strength
+        : arg == "--multiple-scattering" ? o.MultipleScattering
                                          : o.LongRange;
       if (!ParseDouble(v, lo, hi, target))
       {

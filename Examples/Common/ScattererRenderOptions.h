@@ -24,7 +24,7 @@ struct RenderOptions
   bool RequestedPaths = false; // --paths requested: every switched-on effect
   int Photons = -1, Templates = -1, Interval = -1, TransportScale = -1;
   std::string Illumination = "transport"; // transport | per-sample
-  double Radius = -1, Threshold = -1, Strength = -1, LongRange = -1;
+  double Radius = -1, Threshold = -1, Strength = -1, LongRange = -1, MultipleScattering = -1;
 };
 
 /** Parses argv into @p options; false with @p error set on a bad argument. */
