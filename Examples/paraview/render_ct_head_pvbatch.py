@@ -6,7 +6,7 @@
 
 With N ranks the volume is split into N pieces, each with ghost layers as wide as the
 illumination reach (docs/paraview.md). Prints one JSON line: ranks, the first frame
-(pipeline update, ghost exchange, illumination cache) and the median of the next
+(pipeline update, ghost exchange, light transport volume) and the median of the next
 frames in milliseconds, and what rank 0 held: ghost layers, piece size.
 """
 import argparse

@@ -165,7 +165,7 @@ def show_volume(source, view, representation, scene=CT_HEAD_SCENE):
 
 
 def timed_renders(view, frames):
-    """First frame (pipeline update, ghost exchange, illumination cache) and then
+    """First frame (pipeline update, ghost exchange, light transport volume) and then
     `frames` more frames with a camera nudge each, so every one really renders.
     view.StillRender, not simple.Render: that one resets the camera on its first call."""
     start = time.perf_counter()

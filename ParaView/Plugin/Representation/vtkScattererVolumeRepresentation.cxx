@@ -43,7 +43,7 @@ vtkScattererTemplateVolumeMapper* vtkScattererVolumeRepresentation::GetScatterer
   return vtkScattererTemplateVolumeMapper::SafeDownCast(this->VolumeMapper);
 }
 
-// Each setter changes the mapper only; the illumination cache and shader notice the
+// Each setter changes the mapper only; the transport volume and shader notice the
 // change themselves. MarkModified makes ParaView render the view again.
 #define vtkScattererForward(name, type)                                                            \
   void vtkScattererVolumeRepresentation::Set##name(type value)                                    \
