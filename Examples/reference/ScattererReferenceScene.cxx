@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace scatterer_reference_vtk
 {
@@ -42,13 +43,17 @@ bool MakeCtHeadScene(VtkScene& scene, std::string* error)
   return true;
 }
 
-void MakeHardScene(VtkScene& scene)
+void MakeHardScene(VtkScene& scene, int n)
 {
-  scene.Name = "shell-plate";
-  const int n = 96;
+  n = std::max(n, 8);
+  scene.Name = n == 96 ? "shell-plate" : "shell-plate-" + std::to_string(n);
+  // The geometry is in world units over the box [0, 95]^3 whatever n is, so the camera,
+  // the light and the physical thicknesses stay; a coarser grid just samples it more
+  // sparsely (n = 96: spacing 1, the benchmark's scene exactly).
+  const double h = 95.0 / (n - 1);
   auto image = vtkSmartPointer<vtkImageData>::New();
   image->SetDimensions(n, n, n);
-  image->SetSpacing(1.0, 1.0, 1.0);
+  image->SetSpacing(h, h, h);
   image->SetOrigin(0.0, 0.0, 0.0);
   image->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
   auto* s = static_cast<unsigned char*>(image->GetScalarPointer());
@@ -57,12 +62,14 @@ void MakeHardScene(VtkScene& scene)
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i)
       {
-        const double r = std::sqrt((i - c[0]) * (i - c[0]) + (j - c[1]) * (j - c[1]) + (k - c[2]) * (k - c[2]));
+        const double x = i * h, y = j * h, z = k * h;
+        const double r = std::sqrt((x - c[0]) * (x - c[0]) + (y - c[1]) * (y - c[1]) + (z - c[2]) * (z - c[2]));
         unsigned char v = 0;
         if (std::abs(r - 26.0) <= 1.5)
           v = 100; // thin shell, material A
-        // thin plate (2 voxels) between the light (toward +x, +z) and the shell
-        if (i >= 14 && i <= 15 && j >= 20 && j <= 76 && k >= 50 && k <= 90)
+        // thin plate (x in [14, 15]: 2 voxels at n = 96) between the light (toward +x, +z)
+        // and the shell
+        if (x >= 14.0 && x <= 15.0 && y >= 20.0 && y <= 76.0 && z >= 50.0 && z <= 90.0)
           v = 200; // material B
         s[(static_cast<size_t>(k) * n + j) * n + i] = v;
       }

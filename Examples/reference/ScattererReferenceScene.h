@@ -44,8 +44,10 @@ struct VtkScene
 bool MakeCtHeadScene(VtkScene& scene, std::string* error);
 
 /** The synthetic hard scene: 96^3, a thin shell (material A, red) behind a thin plate
- * (material B, white) that shadows it from a directional light. */
-void MakeHardScene(VtkScene& scene);
+ * (material B, white) that shadows it from a directional light. Another @p n samples
+ * the same world-space scene (box [0, 95]^3, same camera and light) on an n^3 grid
+ * (spacing 95 / (n - 1)); its name is then "shell-plate-<n>". */
+void MakeHardScene(VtkScene& scene, int n = 96);
 
 /**
  * "ct-head" or "shell-plate": fills @p scene. On failure returns false with

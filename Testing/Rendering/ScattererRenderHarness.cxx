@@ -67,6 +67,42 @@ void SavePng(const std::string& path, const std::vector<unsigned char>& rgba, in
   writer->Write();
 }
 
+ImageDifference CompareRgb(const std::vector<unsigned char>& a,
+  const std::vector<unsigned char>& b, int levels, const std::vector<bool>* include)
+{
+  ImageDifference d;
+  if (a.size() != b.size() || (include && include->size() != a.size() / 4))
+  {
+    d.Worst = 256;
+    return d;
+  }
+  double sum = 0.0;
+  size_t over = 0;
+  for (size_t p = 0; p < a.size() / 4; ++p)
+  {
+    if (include && !(*include)[p])
+    {
+      continue;
+    }
+    int worst = 0;
+    for (int c = 0; c < 3; ++c)
+    {
+      const int v = std::abs(int(a[4 * p + c]) - int(b[4 * p + c]));
+      sum += v;
+      worst = std::max(worst, v);
+    }
+    over += worst > levels;
+    d.Worst = std::max(d.Worst, worst);
+    ++d.Pixels;
+  }
+  if (d.Pixels > 0)
+  {
+    d.Mean = sum / (3.0 * d.Pixels);
+    d.FractionOver = static_cast<double>(over) / d.Pixels;
+  }
+  return d;
+}
+
 double MeanBrightness(const std::vector<unsigned char>& image)
 {
   double sum = 0;

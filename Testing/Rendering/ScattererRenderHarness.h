@@ -30,6 +30,22 @@ int MaxDifference(const std::vector<unsigned char>& a, const std::vector<unsigne
 /** Writes RGBA pixels of a w x h image to a PNG (to look at a failure). */
 void SavePng(const std::string& path, const std::vector<unsigned char>& rgba, int w, int h);
 
+/** How two RGBA images of the same size differ, on their RGB channels. */
+struct ImageDifference
+{
+  double Mean = 0.0;         // mean absolute channel difference (levels of 255)
+  double FractionOver = 0.0; // fraction of pixels with a channel more than `levels` off
+  int Worst = 0;             // largest channel difference
+  size_t Pixels = 0;         // pixels compared
+};
+
+/**
+ * Compares @p a and @p b (RGBA). With @p include, only the pixels where it is
+ * true count (one entry per pixel). Sizes must match (Worst 256 otherwise).
+ */
+ImageDifference CompareRgb(const std::vector<unsigned char>& a,
+  const std::vector<unsigned char>& b, int levels, const std::vector<bool>* include = nullptr);
+
 /** Mean of the RGB channels. */
 double MeanBrightness(const std::vector<unsigned char>& image);
 
