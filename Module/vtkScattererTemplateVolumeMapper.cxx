@@ -136,6 +136,10 @@ struct vtkScattererTemplateVolumeMapper::vtkInternals
   double LastTransportMs = 0.0;
   // Transport mode: the light transport volume (owns its textures and change key).
   vtkNew<vtkScattererTransportVolume> Transport;
+  // Transport mode: the medium and material tables, and what they were made from.
+  std::string TablesKey;
+  std::vector<float> Medium;
+  std::vector<float> MaterialTable;
   // Transport mode: each material's un-normalised templates (photons in template
   // radii, as generated), for the in-scattering kernels.
   std::vector<std::vector<scatterer::Template>> RawTemplates;
@@ -721,27 +725,49 @@ std::string vtkScattererTemplateVolumeMapper::UpdateTransport(
     ? property->GetScalarOpacityUnitDistance(0)
     : 1.0;
   const double lo = volumeTexture->ScalarRange[0][0], hi = volumeTexture->ScalarRange[0][1];
-  const int tableSize = 4096;
-  t.Medium.resize(4 * tableSize);
-  for (int i = 0; i < tableSize; ++i)
+  const double tableRange[2] = { lo, hi };
+  // The tables change with the transfer functions, the range and the materials only:
+  // recomputed then, not every frame.
+  std::ostringstream tablesKey;
+  tablesKey.precision(17);
+  const bool gray = property->GetColorChannels(0) == 1;
+  tablesKey << opacity->GetMTime() << '|'
+            << (gray ? property->GetGrayTransferFunction(0)->GetMTime()
+                     : property->GetRGBTransferFunction(0)->GetMTime())
+            << '|' << gray << '|' << lo << ',' << hi << '|' << unit;
+  for (const auto& m : plan.Materials.Materials)
   {
-    const double value = lo + (hi - lo) * i / (tableSize - 1.0);
-    double rgb[3] = { 1.0, 1.0, 1.0 };
-    if (property->GetColorChannels(0) == 1)
-    {
-      rgb[0] = rgb[1] = rgb[2] = property->GetGrayTransferFunction(0)->GetValue(value);
-    }
-    else
-    {
-      property->GetRGBTransferFunction(0)->GetColor(value, rgb);
-    }
-    for (int c = 0; c < 3; ++c)
-    {
-      t.Medium[4 * i + c] = static_cast<float>(std::min(std::max(rgb[c], 0.0), 1.0));
-    }
-    t.Medium[4 * i + 3] =
-      static_cast<float>(scatterer::extinctionFromOpacity(opacity->GetValue(value), unit));
+    tablesKey << '|' << m.Physics.selector.lo << ',' << m.Physics.selector.hi << ','
+              << m.Physics.selector.label << ',' << static_cast<int>(m.Physics.selector.kind);
   }
+  if (tablesKey.str() != in.TablesKey)
+  {
+    const int tableSize = 4096;
+    in.Medium.resize(4 * tableSize);
+    for (int i = 0; i < tableSize; ++i)
+    {
+      const double value = lo + (hi - lo) * i / (tableSize - 1.0);
+      double rgb[3] = { 1.0, 1.0, 1.0 };
+      if (gray)
+      {
+        rgb[0] = rgb[1] = rgb[2] = property->GetGrayTransferFunction(0)->GetValue(value);
+      }
+      else
+      {
+        property->GetRGBTransferFunction(0)->GetColor(value, rgb);
+      }
+      for (int c = 0; c < 3; ++c)
+      {
+        in.Medium[4 * i + c] = static_cast<float>(std::min(std::max(rgb[c], 0.0), 1.0));
+      }
+      in.Medium[4 * i + 3] =
+        static_cast<float>(scatterer::extinctionFromOpacity(opacity->GetValue(value), unit));
+    }
+    in.MaterialTable = scatterer_scene::MaterialTable(plan.Materials, tableRange, tableSize);
+    in.TablesKey = tablesKey.str();
+  }
+  t.Medium = in.Medium;
+  t.MaterialTable = in.MaterialTable;
   t.ExtinctionScale = plan.Features.Shadow ? static_cast<float>(this->OcclusionStrength) : 0.0f;
   if (vtkPlaneCollection* planes = this->GetClippingPlanes())
   {
@@ -807,8 +833,6 @@ std::string vtkScattererTemplateVolumeMapper::UpdateTransport(
           has ? kernel[k].offset.z : 0.0f, has ? kernel[k].weight : 0.0f });
     }
   }
-  const double tableRange[2] = { lo, hi };
-  t.MaterialTable = scatterer_scene::MaterialTable(plan.Materials, tableRange, 4096);
   t.SpeedRatios = scatterer_scene::SpeedRatios(plan.Materials);
   t.OpacityRatios = scatterer_scene::OpacityRatios(plan.Materials);
   t.Bleed = plan.Features.Bleed;

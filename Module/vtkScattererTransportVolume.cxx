@@ -25,7 +25,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <sstream>
+#include <cstdint>
+#include <initializer_list>
 
 vtkStandardNewMacro(vtkScattererTransportVolume);
 
@@ -54,13 +55,29 @@ struct SweepPlan
   std::vector<std::pair<int, int>> Runs;
 };
 
-// Attaches one layer of a 3D texture. vtkOpenGLFramebufferObject keeps an
-// attachment of the same texture as it is (whatever the layer), so detach first.
-void AttachLayer(vtkOpenGLFramebufferObject* framebuffer, unsigned int index,
-  vtkTextureObject* texture, int layer)
+// Attaches one layer of a 3D texture (or a 2D texture) to the bound draw framebuffer.
+// Straight to GL: vtkOpenGLFramebufferObject keeps an attachment of the same texture
+// as it is, whatever the layer, and its bookkeeping costs more than the draw.
+void AttachLayer(unsigned int index, vtkTextureObject* texture, int layer)
 {
-  framebuffer->RemoveColorAttachment(index);
-  framebuffer->AddColorAttachment(index, texture, static_cast<unsigned int>(layer));
+  glFramebufferTextureLayer(
+    GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + index, texture->GetHandle(), 0, layer);
+}
+
+void Attach2D(unsigned int index, vtkTextureObject* texture)
+{
+  glFramebufferTexture2D(
+    GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + index, GL_TEXTURE_2D, texture->GetHandle(), 0);
+}
+
+// Leaves no texture attached (the textures are sampled by later passes and the ray caster).
+void DetachAll(vtkOpenGLFramebufferObject* framebuffer)
+{
+  for (unsigned int index = 0; index < 2; ++index)
+  {
+    glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + index, GL_TEXTURE_2D, 0, 0);
+  }
+  framebuffer->ActivateDrawBuffers(1);
 }
 
 // The GL state of the transport passes, and the caller's restored after them:
@@ -93,6 +110,28 @@ private:
   vtkOpenGLState::ScopedglBlendFuncSeparate BlendFunc;
 };
 
+// Draws `quad` once per layer of the 3D `targets` (all of the same size), each layer
+// attached as a colour attachment in order; `program` gets the layer as st_layer.
+void DrawLayers(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLQuadHelper* quad,
+  vtkShaderProgram* program, std::initializer_list<vtkTextureObject*> targets, int layers)
+{
+  for (int z = 0; z < layers; ++z)
+  {
+    unsigned int index = 0;
+    for (vtkTextureObject* target : targets)
+    {
+      AttachLayer(index++, target, z);
+    }
+    if (z == 0)
+    {
+      framebuffer->ActivateDrawBuffers(index);
+    }
+    program->SetUniformf("st_layer", static_cast<float>(z));
+    quad->Render();
+  }
+  DetachAll(framebuffer);
+}
+
 void Multiply3(const double m[9], const double v[3], double out[3])
 {
   for (int r = 0; r < 3; ++r)
@@ -122,7 +161,8 @@ struct vtkScattererTransportVolume::vtkInternals
   std::unique_ptr<vtkOpenGLQuadHelper> Combine;
   vtkOpenGLRenderWindow* Context = nullptr;
 
-  std::string Key;
+  std::uint64_t Key = 0; // fingerprint of the inputs of the last build
+  bool HasKey = false;
   int Dims[3] = { 0, 0, 0 };
   int TransmittanceDims[3] = { 0, 0, 0 };
   int SliceDims[2] = { 0, 0 };
@@ -171,7 +211,7 @@ struct vtkScattererTransportVolume::vtkInternals
     }
     this->Framebuffer->ReleaseGraphicsResources(window);
     this->Context = nullptr;
-    this->Key.clear();
+    this->HasKey = false;
     for (int& d : this->TransmittanceDims)
     {
       d = 0;
@@ -437,9 +477,12 @@ bool vtkScattererTransportVolume::vtkInternals::SweepLight(
     bool first = true;
     for (int k = run.first;; k += step)
     {
-      this->Framebuffer->AddColorAttachment(0, this->Slices[current]);
-      AttachLayer(this->Framebuffer, 1, this->Transmittance, k);
-      this->Framebuffer->ActivateDrawBuffers(2);
+      Attach2D(0, this->Slices[current]);
+      AttachLayer(1, this->Transmittance, k);
+      if (first && run.first == plan.Runs.front().first)
+      {
+        this->Framebuffer->ActivateDrawBuffers(2);
+      }
       vtkTextureObject* previous = this->Slices[1 - current];
       previous->Activate();
       program->SetUniformi("st_previous", previous->GetTextureUnit());
@@ -455,7 +498,7 @@ bool vtkScattererTransportVolume::vtkInternals::SweepLight(
       }
     }
   }
-  this->Framebuffer->RemoveColorAttachments(2);
+  DetachAll(this->Framebuffer);
   this->Medium->Deactivate();
   in.Volume->Deactivate();
   this->CurrentPlan = plan;
@@ -524,15 +567,8 @@ void vtkScattererTransportVolume::vtkInternals::GatherLight(
     state->vtkglEnable(GL_BLEND);
     state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
   }
-  for (int z = 0; z < this->Dims[2]; ++z)
-  {
-    AttachLayer(this->Framebuffer, 0, this->LightTexture, z);
-    AttachLayer(this->Framebuffer, 1, this->Source, z);
-    this->Framebuffer->ActivateDrawBuffers(2);
-    program->SetUniformf("st_layer", static_cast<float>(z));
-    this->Gather->Render();
-  }
-  this->Framebuffer->RemoveColorAttachments(2);
+  DrawLayers(this->Framebuffer, this->Gather.get(), program, { this->LightTexture, this->Source },
+    this->Dims[2]);
   this->Medium->Deactivate();
   this->Materials->Deactivate();
   this->Kernel->Deactivate();
@@ -601,15 +637,8 @@ bool vtkScattererTransportVolume::vtkInternals::AddScatteredAndAmbientLight(cons
     coarsen->SetUniformi("st_medium", this->Medium->GetTextureUnit());
     this->Source->Activate();
     coarsen->SetUniformi("st_source", this->Source->GetTextureUnit());
-    for (int z = 0; z < this->CoarseDims[2]; ++z)
-    {
-      AttachLayer(this->Framebuffer, 0, this->CoarseMedium, z);
-      AttachLayer(this->Framebuffer, 1, this->CoarseSource, z);
-      this->Framebuffer->ActivateDrawBuffers(2);
-      coarsen->SetUniformf("st_layer", static_cast<float>(z));
-      this->Coarsen->Render();
-    }
-    this->Framebuffer->RemoveColorAttachments(2);
+    DrawLayers(this->Framebuffer, this->Coarsen.get(), coarsen,
+      { this->CoarseMedium, this->CoarseSource }, this->CoarseDims[2]);
     this->Source->Deactivate();
     this->Medium->Deactivate();
     in.Volume->Deactivate();
@@ -631,13 +660,8 @@ bool vtkScattererTransportVolume::vtkInternals::AddScatteredAndAmbientLight(cons
     previous->Activate();
     program->SetUniformi("st_previous", previous->GetTextureUnit());
     program->SetUniformi("st_first", i == 0 ? 1 : 0);
-    for (int z = 0; z < this->CoarseDims[2]; ++z)
-    {
-      AttachLayer(this->Framebuffer, 0, this->Fluence[current], z);
-      this->Framebuffer->ActivateDrawBuffers(1);
-      program->SetUniformf("st_layer", static_cast<float>(z));
-      this->Diffuse->Render();
-    }
+    DrawLayers(this->Framebuffer, this->Diffuse.get(), program, { this->Fluence[current] },
+      this->CoarseDims[2]);
     previous->Deactivate();
     current = 1 - current;
   }
@@ -671,14 +695,8 @@ bool vtkScattererTransportVolume::vtkInternals::AddScatteredAndAmbientLight(cons
   state->vtkglEnable(GL_BLEND);
   state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
   state->vtkglViewport(0, 0, this->Dims[0], this->Dims[1]);
-  for (int z = 0; z < this->Dims[2]; ++z)
-  {
-    AttachLayer(this->Framebuffer, 0, this->LightTexture, z);
-    this->Framebuffer->ActivateDrawBuffers(1);
-    combine->SetUniformf("st_layer", static_cast<float>(z));
-    this->Combine->Render();
-  }
-  this->Framebuffer->RemoveColorAttachments(1);
+  DrawLayers(this->Framebuffer, this->Combine.get(), combine, { this->LightTexture },
+    this->Dims[2]);
   this->CoarseSource->Deactivate();
   fluence->Deactivate();
   state->vtkglDisable(GL_BLEND);
@@ -687,52 +705,78 @@ bool vtkScattererTransportVolume::vtkInternals::AddScatteredAndAmbientLight(cons
 
 namespace
 {
-std::string KeyOf(const vtkScattererTransportVolume::Inputs& in)
+// A fingerprint of everything a build depends on: FNV-1a over the inputs' bytes.
+// Cheap enough for every frame (tens of kilobytes), unlike formatting them as text.
+class Fingerprint
 {
-  std::ostringstream k;
-  k.precision(9);
-  k << in.Volume << '|' << in.VolumeUploadTime << '|' << in.ScalarScale << ',' << in.ScalarBias
-    << '|' << in.ExtinctionScale << '|' << in.Downsample << '|' << in.IndexOrigin[0] << ','
-    << in.IndexOrigin[1] << ',' << in.IndexOrigin[2] << '|' << in.Cropping << ','
-    << in.CropFlags << '|' << in.Bleed << in.Boundary << '|' << in.MultipleScattering << ','
-    << in.DiffusionIterations << '|' << in.KernelWidth;
-  for (double v : in.TexToWorld)
+public:
+  template <typename T>
+  void Add(const T* values, size_t count)
   {
-    k << ',' << v;
-  }
-  for (double v : in.TexToDataset)
-  {
-    k << ',' << v;
-  }
-  auto list = [&k](const std::vector<float>& values) {
-    k << '|';
-    for (float v : values)
+    const auto* bytes = reinterpret_cast<const unsigned char*>(values);
+    for (size_t i = 0; i < count * sizeof(T); ++i)
     {
-      k << v << ',';
+      this->Hash = (this->Hash ^ bytes[i]) * 1099511628211ull;
     }
-  };
-  list(in.Medium);
-  list(in.ClipPlanes);
-  list(in.MaterialTable);
-  list(in.MaterialColors);
-  list(in.SpeedRatios);
-  list(in.OpacityRatios);
-  list(in.Kernels);
-  for (int a = 0; a < 3; ++a)
-  {
-    k << ',' << in.CropMin[a] << ',' << in.CropMax[a];
   }
+  template <typename T>
+  void Add(const T& value)
+  {
+    this->Add(&value, 1);
+  }
+  template <typename T>
+  void Add(const std::vector<T>& values)
+  {
+    this->Add(values.size());
+    this->Add(values.data(), values.size());
+  }
+  std::uint64_t Value() const { return this->Hash; }
+
+private:
+  std::uint64_t Hash = 14695981039346656037ull;
+};
+
+std::uint64_t KeyOf(const vtkScattererTransportVolume::Inputs& in)
+{
+  Fingerprint f;
+  f.Add(in.Volume);
+  f.Add(in.VolumeUploadTime);
+  f.Add(in.ScalarScale);
+  f.Add(in.ScalarBias);
+  f.Add(in.ExtinctionScale);
+  f.Add(in.Downsample);
+  f.Add(in.IndexOrigin, 3);
+  f.Add(in.Cropping);
+  f.Add(in.CropFlags);
+  f.Add(in.CropMin, 3);
+  f.Add(in.CropMax, 3);
+  f.Add(in.Bleed);
+  f.Add(in.Boundary);
+  f.Add(in.MultipleScattering);
+  f.Add(in.DiffusionIterations);
+  f.Add(in.KernelWidth);
+  f.Add(in.TexToWorld, 16);
+  f.Add(in.TexToDataset, 16);
+  f.Add(in.Medium);
+  f.Add(in.ClipPlanes);
+  f.Add(in.MaterialTable);
+  f.Add(in.MaterialColors);
+  f.Add(in.SpeedRatios);
+  f.Add(in.OpacityRatios);
+  f.Add(in.Kernels);
   for (const auto& l : in.Lights)
   {
-    k << "|L" << l.Positional;
-    for (int a = 0; a < 3; ++a)
-    {
-      k << ',' << l.Toward[a] << ',' << l.Position[a] << ',' << l.Color[a] << ',' << l.Ambient[a] << ','
-        << l.FocalDirection[a] << ',' << l.Attenuation[a];
-    }
-    k << ',' << l.ConeCos << ',' << l.Exponent;
+    f.Add(l.Toward, 3);
+    f.Add(l.Position, 3);
+    f.Add(l.Positional);
+    f.Add(l.Color, 3);
+    f.Add(l.Ambient, 3);
+    f.Add(l.FocalDirection, 3);
+    f.Add(l.Attenuation, 3);
+    f.Add(l.ConeCos);
+    f.Add(l.Exponent);
   }
-  return k.str();
+  return f.Value();
 }
 }
 
@@ -749,8 +793,8 @@ bool vtkScattererTransportVolume::Update(
   {
     s.Release(s.Context);
   }
-  const std::string key = KeyOf(in);
-  if (key == s.Key && s.Context == window && s.LightTexture)
+  const std::uint64_t key = KeyOf(in);
+  if (s.HasKey && key == s.Key && s.Context == window && s.LightTexture)
   {
     s.LastMs = 0.0;
     return true;
@@ -897,7 +941,7 @@ bool vtkScattererTransportVolume::Update(
 
   if (!ok)
   {
-    s.Key.clear();
+    s.HasKey = false;
     return false;
   }
   if (this->SynchronousTiming)
@@ -905,6 +949,7 @@ bool vtkScattererTransportVolume::Update(
     glFinish();
   }
   s.Key = key;
+  s.HasKey = true;
   ++s.Builds;
   s.LastMs =
     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -941,7 +986,7 @@ std::vector<float> vtkScattererTransportVolume::ReadTransmittance(
     PassState passes(window, s.Framebuffer);
     ok = s.SweepLight(s.Last, s.Last.Lights[static_cast<size_t>(light)], why);
   }
-  s.Key.clear(); // the transmittance texture now holds this light alone
+  s.HasKey = false; // the transmittance texture now holds this light alone
   if (!ok)
   {
     return {};
