@@ -9,10 +9,18 @@
 //
 //   scatterer-bench-render [--frames N] [--size WxH] [--out DIR] [--resample XxYxZ]
 //                          [--only a,b] [--append]
+//
+// Built as scatterer-bench-render-egl (SCATTERER_BENCH_EGL), the same benchmark renders
+// into a headless EGL context (ScattererEglContext.h) instead of an X window: for GPU
+// machines without a display.
 #include "Common/ScattererCtHeadScene.h"
 #include "Common/ScattererMapperSetup.h"
 #include "Common/ScattererScreenshot.h"
 
+#ifdef SCATTERER_BENCH_EGL
+#include "ScattererEglContext.h"
+#include "vtkGenericOpenGLRenderWindow.h"
+#endif
 #include "vtkCamera.h"
 #include "vtkImageData.h"
 #include "vtkImageResize.h"
@@ -111,11 +119,21 @@ int main(int argc, char* argv[])
       return 2;
     }
   }
+#ifdef SCATTERER_BENCH_EGL
+  std::setvbuf(stdout, nullptr, _IOLBF, 0); // lines survive a `timeout` kill under a pipe
+  scatterer_egl::Context egl;
+  if (!egl.Create(width, height))
+  {
+    std::cerr << "EGL: no OpenGL context\n";
+    return 1;
+  }
+#else
   if (!std::getenv("DISPLAY"))
   {
     std::cerr << "no X display: run under xvfb-run (scripts/xvfb.sh)\n";
     return 1;
   }
+#endif
   std::string error;
   vtkSmartPointer<vtkImageData> image =
     vtkScattererVolumeReader::ReadVolume(scatterer_examples::CtHeadPath(), &error);
@@ -143,8 +161,19 @@ int main(int argc, char* argv[])
     return 1;
   }
 
+#ifdef SCATTERER_BENCH_EGL
+  vtkNew<vtkGenericOpenGLRenderWindow> window;
+  egl.Attach(window);
+  window->SetSize(width, height);
+  if (!egl.InitializeVtk(window))
+  {
+    std::cerr << "VTK did not accept the EGL context\n";
+    return 1;
+  }
+#else
   vtkNew<vtkRenderWindow> window;
   window->SetSize(width, height);
+#endif
   scatterer_examples::ApplyCtHeadWindowSettings(window);
   const std::string csvPath = out + "/render.csv";
   const bool header = !append || !std::ifstream(csvPath).good();
