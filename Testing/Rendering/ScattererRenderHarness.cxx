@@ -3,6 +3,9 @@
 #include "vtkImageData.h"
 #include "vtkPNGWriter.h"
 #include "vtkPointData.h"
+#include "vtkAbstractMapper.h"
+#include "vtkRenderer.h"
+#include "vtkRendererCollection.h"
 #include "vtkRenderWindow.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtk_glew.h"
@@ -33,6 +36,17 @@ std::vector<unsigned char> RenderAndGrab(vtkRenderWindow* window)
   window->GetRGBACharPixelData(0, 0, size[0] - 1, size[1] - 1, 0, pixels);
   const unsigned char* p = pixels->GetPointer(0);
   return std::vector<unsigned char>(p, p + pixels->GetNumberOfValues());
+}
+
+std::vector<unsigned char> RenderSceneOnce(vtkRenderer* renderer, vtkAbstractMapper* mapper)
+{
+  vtkRenderWindow* window = SharedWindow();
+  window->GetRenderers()->RemoveAllItems();
+  window->AddRenderer(renderer);
+  std::vector<unsigned char> pixels = RenderAndGrab(window);
+  window->RemoveRenderer(renderer);
+  mapper->ReleaseGraphicsResources(window);
+  return pixels;
 }
 
 unsigned int TakeGLError()

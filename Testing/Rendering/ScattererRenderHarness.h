@@ -10,7 +10,9 @@
 #include <string>
 #include <vector>
 
+class vtkAbstractMapper;
 class vtkObject;
+class vtkRenderer;
 class vtkRenderWindow;
 
 namespace scatterer_testing
@@ -20,6 +22,13 @@ vtkRenderWindow* SharedWindow();
 
 /** Renders the window and returns its RGBA pixels. */
 std::vector<unsigned char> RenderAndGrab(vtkRenderWindow* window);
+
+/**
+ * Renders @p renderer alone in the shared window and returns its RGBA pixels; then takes
+ * the renderer out again and releases @p mapper's graphics resources, so that the next
+ * scene starts afresh.
+ */
+std::vector<unsigned char> RenderSceneOnce(vtkRenderer* renderer, vtkAbstractMapper* mapper);
 
 /** OpenGL errors raised since the last call (0 = none); clears them. */
 unsigned int TakeGLError();

@@ -152,17 +152,12 @@ std::vector<unsigned char> Render(vtkImageData* image, vtkMatrix4x4* user, Mode 
   camera->SetViewUp(0, 0, 1);
   renderer->ResetCameraClippingRange();
 
-  vtkRenderWindow* window = scatterer_testing::SharedWindow();
-  window->GetRenderers()->RemoveAllItems();
-  window->AddRenderer(renderer);
-  auto pixels = scatterer_testing::RenderAndGrab(window);
+  auto pixels = scatterer_testing::RenderSceneOnce(renderer, mapper);
   if (mode == Mode::Transport)
   {
     EXPECT_EQ(ours->GetLastShaderFeatures().rfind("transport", 0), 0u)
       << ours->GetLastShaderFeatures();
   }
-  window->RemoveRenderer(renderer);
-  mapper->ReleaseGraphicsResources(window);
   return pixels;
 }
 

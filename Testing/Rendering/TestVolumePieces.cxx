@@ -107,16 +107,11 @@ std::vector<unsigned char> RenderOwnedPart(
   camera->SetViewUp(0, 0, 1);
   renderer->ResetCameraClippingRange();
 
-  vtkRenderWindow* window = scatterer_testing::SharedWindow();
-  window->GetRenderers()->RemoveAllItems();
-  window->AddRenderer(renderer);
-  auto pixels = scatterer_testing::RenderAndGrab(window);
+  auto pixels = scatterer_testing::RenderSceneOnce(renderer, mapper);
   EXPECT_EQ(mapper->GetLastShaderFeatures().rfind(
               mode == vtkScattererTemplateVolumeMapper::TRANSPORT ? "transport" : "per-sample", 0),
     0u)
     << mapper->GetLastShaderFeatures();
-  window->RemoveRenderer(renderer);
-  mapper->ReleaseGraphicsResources(window);
   return pixels;
 }
 
