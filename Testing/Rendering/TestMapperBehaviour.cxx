@@ -28,11 +28,14 @@
 #include "vtkScattererTemplateVolumeMapper.h"
 #include "vtkShader.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkLightCollection.h"
+#include "vtkLightKit.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <string>
 #include <vector>
@@ -400,4 +403,38 @@ TEST(MapperBehaviour, CroppingClippingAndOpaqueGeometryCoverTheSamePixelsAsStock
   EXPECT_LT(differ, stock.size() / 4 / 200) << differ << " pixels covered differently from stock";
   EXPECT_GT(geometry, 100u) << "the sphere is not visible";
   EXPECT_EQ(geometrySame, geometry) << "pixels of the opaque sphere changed";
+}
+
+TEST(MapperBehaviour, LightKitLightsTheVolumeWithEveryLight)
+{
+  // ParaView's default lighting: vtkLightKit's key, fill and back lights, which follow
+  // the camera. The transport volume carries each of them.
+  Scene scene(false, 0);
+  vtkNew<vtkLightKit> kit;
+  kit->AddLightsToRenderer(scene.Renderer);
+  const int lights = scene.Renderer->GetLights()->GetNumberOfItems();
+  ASSERT_GE(lights, 3);
+  const auto all = scene.Render();
+  const std::string features = scene.Mapper->GetLastShaderFeatures();
+  EXPECT_EQ(features.rfind("transport lights=" + std::to_string(lights), 0), 0u) << features;
+  const auto stock = scene.RenderStock();
+  int blackHoles = 0;
+  for (size_t i = 0; i < all.size(); i += 4)
+  {
+    const bool shown = std::max({ stock[i], stock[i + 1], stock[i + 2] }) >= 24;
+    blackHoles += shown && std::max({ all[i], all[i + 1], all[i + 2] }) == 0 ? 1 : 0;
+  }
+  EXPECT_EQ(blackHoles, 0) << "pixels the stock mapper shows came out black";
+  // The key light alone gives less light than the whole kit.
+  vtkCollectionSimpleIterator it;
+  vtkLight* light = nullptr;
+  int index = 0;
+  for (scene.Renderer->GetLights()->InitTraversal(it);
+       (light = scene.Renderer->GetLights()->GetNextLight(it));)
+  {
+    light->SetSwitch(index++ == 0);
+  }
+  const auto key = scene.Render();
+  EXPECT_LT(MeanBrightness(key) + 2.0, MeanBrightness(all))
+    << "the kit's other lights add no light";
 }
