@@ -328,16 +328,21 @@ double vtkScattererTemplateVolumeMapper::GetIlluminationReach(const double spaci
   const double sx = std::abs(spacing[0]), sy = std::abs(spacing[1]), sz = std::abs(spacing[2]);
   const double radius = this->TemplateRadius > 0.0 ? this->TemplateRadius : 10.0 * (sx + sy + sz) / 3.0;
   // Per sample: photons lie within one radius; the thin-part check marches on toward
-  // the light to LongRangeMultiple x the photon's offset. Transport: the kernel and
-  // the multiple-scattering average reach one radius, and a transport voxel is
-  // interpolated by its neighbours.
+  // the light to LongRangeMultiple x the photon's offset. Transport: the kernel reaches
+  // one radius, the ambient occlusion two diffusion voxels and the diffusion one such
+  // voxel per iteration (a diffusion voxel spans max(4, scale) volume voxels); and a
+  // transport voxel is interpolated by its neighbours.
   const bool thin = this->ShadowsEnabled && this->ThinPartCheckEnabled;
   const bool transport = this->IlluminationMode == TRANSPORT;
-  const double photonReach = !transport && thin ? radius * this->LongRangeMultiple : radius;
-  const double gridMargin =
-    transport ? std::max(this->TransportScale, this->InteractiveTransportScale) *
-      std::max({ sx, sy, sz })
-              : 0.0;
+  const int scale = std::max(this->TransportScale, this->InteractiveTransportScale);
+  const double voxel = std::max({ sx, sy, sz });
+  const double diffusionVoxel = std::max(4, scale) * voxel;
+  const int iterations = vtkScattererTransportVolume::Inputs().DiffusionIterations;
+  const double transportReach = std::max({ radius, 2.0 * diffusionVoxel,
+    this->MultipleScattering > 0.0 ? iterations * diffusionVoxel : 0.0 });
+  const double photonReach =
+    transport ? transportReach : (thin ? radius * this->LongRangeMultiple : radius);
+  const double gridMargin = transport ? scale * voxel : 0.0;
   const double reach = photonReach + gridMargin;
   return std::isfinite(reach) ? reach : 0.0;
 }

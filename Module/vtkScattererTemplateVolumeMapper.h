@@ -184,13 +184,15 @@ public:
 
   /**
    * How far, in the volume's data units, the illumination of a sample reads the
-   * volume locally: the template radius (TemplateRadius, or 10 x the mean of
-   * `spacing` when that is 0) times LongRangeMultiple in per-sample mode with the
-   * thin-part check; in transport mode the template radius (kernel and
-   * multiple-scattering reach) plus one transport voxel (TransportScale x the
-   * largest spacing). Ghost layers this wide give a piece of a distributed volume
-   * the same in-scattering as the whole volume; shadows cast from farther away
-   * (other pieces) are not seen by a piece (docs/paraview.md).
+   * volume locally. Per sample: the template radius (TemplateRadius, or 10 x the
+   * mean of `spacing` when that is 0), times LongRangeMultiple with the thin-part
+   * check. Transport: the largest of the template radius (the kernel), two diffusion
+   * voxels (the ambient occlusion) and one diffusion voxel per diffusion iteration
+   * (multiple scattering), a diffusion voxel being max(4, scale) x the largest spacing
+   * with scale the larger of TransportScale and InteractiveTransportScale; plus one
+   * transport voxel. Ghost layers this wide give a piece of a distributed volume the
+   * in-scattering, multiple scattering and ambient light of the whole volume; shadows
+   * cast from farther away (other pieces) are not seen by a piece (docs/paraview.md).
    * Assumes an unscaled volume matrix.
    */
   double GetIlluminationReach(const double spacing[3]) const;

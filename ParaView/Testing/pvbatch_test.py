@@ -102,9 +102,10 @@ def ct_head_two_ranks(args):
     header = scenes.read_mhd_header(args.data)
     spacing = [float(v) for v in header["ElementSpacing"].split()]
     dims = [int(v) for v in header["DimSize"].split()]
-    # The mapper's reach for the CT head in transport mode: the template radius (10 x
-    # mean spacing) plus one transport voxel (InteractiveTransportScale 4 voxels).
-    reach = 10.0 * sum(spacing) / 3.0 + 4.0 * max(spacing)
+    # The mapper's reach for the CT head in transport mode: the diffusion's 8 iterations
+    # of 4-voxel steps (longer than the 10 x mean spacing template radius), plus one
+    # transport voxel (InteractiveTransportScale 4 voxels).
+    reach = max(10.0 * sum(spacing) / 3.0, 8 * 4.0 * max(spacing)) + 4.0 * max(spacing)
     needed = math.ceil(reach / min(spacing))
     ghosts = info["ScattererRequestedGhostLayersInfo"][0]
     check(ghosts >= needed, "each piece asked for %d ghost layers >= reach %.1f mm / %.3f mm = %d"
