@@ -136,10 +136,10 @@ struct vtkScattererTemplateVolumeMapper::vtkInternals
   double LastTransportMs = 0.0;
   // Transport mode: the light transport volume (owns its textures and change key).
   vtkNew<vtkScattererTransportVolume> Transport;
-  // Transport mode: the medium and material tables, and what they were made from.
+  // Transport mode: what the transport volume is built from (kept between frames: its
+  // tables are rebuilt only when TablesKey changes).
+  vtkScattererTransportVolume::Inputs TransportInputs;
   std::string TablesKey;
-  std::vector<float> Medium;
-  std::vector<float> MaterialTable;
   // Transport mode: each material's un-normalised templates (photons in template
   // radii, as generated), for the in-scattering kernels.
   std::vector<std::vector<scatterer::Template>> RawTemplates;
@@ -692,7 +692,7 @@ std::string vtkScattererTemplateVolumeMapper::UpdateTransport(
     return "the volume texture is not loaded";
   }
 
-  vtkScattererTransportVolume::Inputs t;
+  vtkScattererTransportVolume::Inputs& t = in.TransportInputs;
   t.Volume = block->TextureObject;
   // Scale and bias as the ray caster applies them (64-bit types come pre-scaled).
   t.ScalarScale = volumeTexture->HandleLargeDataTypes ? 1.0f : volumeTexture->Scale[0];
@@ -730,50 +730,34 @@ std::string vtkScattererTemplateVolumeMapper::UpdateTransport(
     ? property->GetScalarOpacityUnitDistance(0)
     : 1.0;
   const double lo = volumeTexture->ScalarRange[0][0], hi = volumeTexture->ScalarRange[0][1];
-  const double tableRange[2] = { lo, hi };
-  // The tables change with the transfer functions, the range and the materials only:
-  // recomputed then, not every frame.
+  // The tables (medium, materials, kernels) change with the transfer functions, the range,
+  // the materials, the templates and the kernel settings only: rebuilt then, not every
+  // frame, and the transport volume is told by TablesVersion.
+  const auto& mats = plan.Materials.Materials;
   std::ostringstream tablesKey;
   tablesKey.precision(17);
   const bool gray = property->GetColorChannels(0) == 1;
   tablesKey << opacity->GetMTime() << '|'
             << (gray ? property->GetGrayTransferFunction(0)->GetMTime()
                      : property->GetRGBTransferFunction(0)->GetMTime())
-            << '|' << gray << '|' << lo << ',' << hi << '|' << unit;
-  for (const auto& m : plan.Materials.Materials)
+            << '|' << gray << '|' << lo << ',' << hi << '|' << unit << '|' << in.TemplateKey
+            << '|' << this->PhotonCap << '|' << plan.Radius;
+  for (const auto& m : mats)
   {
     tablesKey << '|' << m.Physics.selector.lo << ',' << m.Physics.selector.hi << ','
-              << m.Physics.selector.label << ',' << static_cast<int>(m.Physics.selector.kind);
+              << m.Physics.selector.label << ',' << static_cast<int>(m.Physics.selector.kind)
+              << ',' << m.OpacityPerUnit << ',' << m.Physics.refractiveIndex << ','
+              << m.Physics.diffuse.x << ','
+              << m.Physics.diffuse.y << ',' << m.Physics.diffuse.z;
   }
   if (tablesKey.str() != in.TablesKey)
   {
-    const int tableSize = 4096;
-    in.Medium.resize(4 * tableSize);
-    for (int i = 0; i < tableSize; ++i)
-    {
-      const double value = lo + (hi - lo) * i / (tableSize - 1.0);
-      double rgb[3] = { 1.0, 1.0, 1.0 };
-      if (gray)
-      {
-        rgb[0] = rgb[1] = rgb[2] = property->GetGrayTransferFunction(0)->GetValue(value);
-      }
-      else
-      {
-        property->GetRGBTransferFunction(0)->GetColor(value, rgb);
-      }
-      for (int c = 0; c < 3; ++c)
-      {
-        in.Medium[4 * i + c] = static_cast<float>(std::min(std::max(rgb[c], 0.0), 1.0));
-      }
-      in.Medium[4 * i + 3] =
-        static_cast<float>(scatterer::extinctionFromOpacity(opacity->GetValue(value), unit));
-    }
-    in.MaterialTable = scatterer_scene::MaterialTable(plan.Materials, tableRange, tableSize);
+    this->UpdateTransportTables(vol, plan, lo, hi, unit);
     in.TablesKey = tablesKey.str();
+    ++t.TablesVersion;
   }
-  t.Medium = in.Medium;
-  t.MaterialTable = in.MaterialTable;
   t.ExtinctionScale = plan.Features.Shadow ? static_cast<float>(this->OcclusionStrength) : 0.0f;
+  t.ClipPlanes.clear();
   if (vtkPlaneCollection* planes = this->GetClippingPlanes())
   {
     for (int p = 0; p < planes->GetNumberOfItems() && p < 6; ++p)
@@ -797,6 +781,7 @@ std::string vtkScattererTemplateVolumeMapper::UpdateTransport(
   const bool interactive = vol->GetAllocatedRenderTime() < 1.0;
   t.Downsample = interactive ? this->InteractiveTransportScale : this->TransportScale;
   const auto& lights = plan.Lights;
+  t.Lights.clear();
   for (int l = 0; l < lights.Count(); ++l)
   {
     vtkScattererTransportVolume::Light light;
@@ -814,10 +799,59 @@ std::string vtkScattererTemplateVolumeMapper::UpdateTransport(
     light.Exponent = lights.Exponent[l];
     t.Lights.push_back(light);
   }
+  t.Bleed = plan.Features.Bleed;
+  t.Boundary = plan.Features.Boundary;
+  t.MultipleScattering = static_cast<float>(this->MultipleScattering);
+
+  auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  std::string why;
+  if (!in.Transport->Update(renWin, t, why))
+  {
+    vtkErrorMacro("The light transport volume could not be built: " << why
+      << "; this volume renders as vtkOpenGLGPUVolumeRayCastMapper would.");
+    return "the light transport volume could not be built";
+  }
+  in.LastTransportMs = in.Transport->GetLastBuildMilliseconds();
+  return "";
+}
+
+void vtkScattererTemplateVolumeMapper::UpdateTransportTables(
+  vtkVolume* vol, const FramePlan& plan, double lo, double hi, double unit)
+{
+  vtkInternals& in = *this->Internals;
+  vtkScattererTransportVolume::Inputs& t = in.TransportInputs;
+  vtkVolumeProperty* property = vol->GetProperty();
+  vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
+  const bool gray = property->GetColorChannels(0) == 1;
+  const int tableSize = 4096;
+  t.Medium.resize(4 * tableSize);
+  for (int i = 0; i < tableSize; ++i)
+  {
+    const double value = lo + (hi - lo) * i / (tableSize - 1.0);
+    double rgb[3] = { 1.0, 1.0, 1.0 };
+    if (gray)
+    {
+      rgb[0] = rgb[1] = rgb[2] = property->GetGrayTransferFunction(0)->GetValue(value);
+    }
+    else
+    {
+      property->GetRGBTransferFunction(0)->GetColor(value, rgb);
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      t.Medium[4 * i + c] = static_cast<float>(std::min(std::max(rgb[c], 0.0), 1.0));
+    }
+    t.Medium[4 * i + 3] =
+      static_cast<float>(scatterer::extinctionFromOpacity(opacity->GetValue(value), unit));
+  }
+  const double tableRange[2] = { lo, hi };
+  t.MaterialTable = scatterer_scene::MaterialTable(plan.Materials, tableRange, tableSize);
   // Materials and their kernels: the merged templates, in the material's mean free
   // paths (scatterer/Transport.h), at most one template radius.
   const auto& mats = plan.Materials.Materials;
   t.KernelWidth = std::max(1, this->PhotonCap);
+  t.MaterialColors.clear();
+  t.Kernels.clear();
   for (size_t m = 0; m < mats.size(); ++m)
   {
     const auto& material = mats[m];
@@ -840,20 +874,6 @@ std::string vtkScattererTemplateVolumeMapper::UpdateTransport(
   }
   t.SpeedRatios = scatterer_scene::SpeedRatios(plan.Materials);
   t.OpacityRatios = scatterer_scene::OpacityRatios(plan.Materials);
-  t.Bleed = plan.Features.Bleed;
-  t.Boundary = plan.Features.Boundary;
-  t.MultipleScattering = static_cast<float>(this->MultipleScattering);
-
-  auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  std::string why;
-  if (!in.Transport->Update(renWin, t, why))
-  {
-    vtkErrorMacro("The light transport volume could not be built: " << why
-      << "; this volume renders as vtkOpenGLGPUVolumeRayCastMapper would.");
-    return "the light transport volume could not be built";
-  }
-  in.LastTransportMs = in.Transport->GetLastBuildMilliseconds();
-  return "";
 }
 
 std::string vtkScattererTemplateVolumeMapper::RenderIlluminated(

@@ -393,6 +393,9 @@ private:
   std::string UpdateTemplates(const FramePlan& plan);
   /** Rebuilds the light transport volume if its inputs changed (transport mode). */
   std::string UpdateTransport(vtkRenderer* ren, vtkVolume* vol, const FramePlan& plan);
+  /** The medium, material and kernel tables of the transport volume's inputs. */
+  void UpdateTransportTables(
+    vtkVolume* vol, const FramePlan& plan, double lo, double hi, double unit);
   /** Installs the GLSL and uniforms, then lets the stock ray caster render. */
   std::string RenderIlluminated(vtkRenderer* ren, vtkVolume* vol, const FramePlan& plan);
   /** Renders as the stock mapper, recording why. */

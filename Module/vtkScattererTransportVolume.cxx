@@ -132,6 +132,13 @@ void DrawLayers(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLQuadHelper* qu
   DetachAll(framebuffer);
 }
 
+// a / b rounded toward minus infinity (b > 0): grids anchored to index 0 for pieces
+// whose extents start below or above it.
+int FloorDiv(int a, int b)
+{
+  return a >= 0 ? a / b : -((-a + b - 1) / b);
+}
+
 void Multiply3(const double m[9], const double v[3], double out[3])
 {
   for (int r = 0; r < 3; ++r)
@@ -584,13 +591,12 @@ bool vtkScattererTransportVolume::vtkInternals::AddScatteredAndAmbientLight(cons
   // global fine indices) so pieces share it.
   const int block = std::max(1, 4 / std::max(1, in.Downsample));
   this->Block = block;
-  auto floorDiv = [](int a, int b) { return a >= 0 ? a / b : -((-a + b - 1) / b); };
   for (int a = 0; a < 3; ++a)
   {
     const int first = this->FirstIndex[a];
-    const int coarseFirst = floorDiv(first, block);
+    const int coarseFirst = FloorDiv(first, block);
     this->CoarseToGrid[a] = block * coarseFirst - first;
-    this->CoarseDims[a] = floorDiv(first + this->Dims[a] - 1, block) - coarseFirst + 1;
+    this->CoarseDims[a] = FloorDiv(first + this->Dims[a] - 1, block) - coarseFirst + 1;
   }
   if (!this->Fluence[0] || this->Fluence[0]->GetWidth() != static_cast<unsigned int>(this->CoarseDims[0]) ||
     this->Fluence[0]->GetHeight() != static_cast<unsigned int>(this->CoarseDims[1]) ||
@@ -705,8 +711,8 @@ bool vtkScattererTransportVolume::vtkInternals::AddScatteredAndAmbientLight(cons
 
 namespace
 {
-// A fingerprint of everything a build depends on: FNV-1a over the inputs' bytes.
-// Cheap enough for every frame (tens of kilobytes), unlike formatting them as text.
+// A fingerprint of everything a build depends on: FNV-1a over the inputs' bytes (the
+// tables by their version). Cheap enough for every frame, unlike formatting as text.
 class Fingerprint
 {
 public:
@@ -754,16 +760,10 @@ std::uint64_t KeyOf(const vtkScattererTransportVolume::Inputs& in)
   f.Add(in.Boundary);
   f.Add(in.MultipleScattering);
   f.Add(in.DiffusionIterations);
-  f.Add(in.KernelWidth);
+  f.Add(in.TablesVersion);
   f.Add(in.TexToWorld, 16);
   f.Add(in.TexToDataset, 16);
-  f.Add(in.Medium);
   f.Add(in.ClipPlanes);
-  f.Add(in.MaterialTable);
-  f.Add(in.MaterialColors);
-  f.Add(in.SpeedRatios);
-  f.Add(in.OpacityRatios);
-  f.Add(in.Kernels);
   for (const auto& l : in.Lights)
   {
     f.Add(l.Toward, 3);
@@ -810,13 +810,12 @@ bool vtkScattererTransportVolume::Update(
   const int volumeDims[3] = { static_cast<int>(in.Volume->GetWidth()),
     static_cast<int>(in.Volume->GetHeight()), static_cast<int>(in.Volume->GetDepth()) };
   const int ds = std::max(1, in.Downsample);
-  auto floorDiv = [](int a, int b) { return a >= 0 ? a / b : -((-a + b - 1) / b); };
   double gridToWorld[9];
   for (int a = 0; a < 3; ++a)
   {
     const int n = std::max(1, volumeDims[a]);
     const int e0 = in.IndexOrigin[a];
-    const int first = floorDiv(e0, ds), last = floorDiv(e0 + n - 1 + ds - 1, ds);
+    const int first = FloorDiv(e0, ds), last = FloorDiv(e0 + n - 1 + ds - 1, ds);
     s.Dims[a] = n < 2 ? 1 : last - first + 1;
     s.FirstIndex[a] = first;
     const int m = s.Dims[a];

@@ -81,6 +81,10 @@ public:
     int Downsample = 2;            ///< volume voxels per transport voxel along each axis
     int IndexOrigin[3] = { 0, 0, 0 }; ///< structured index of the texture's first texel (extent start)
     std::vector<Light> Lights;
+    /// Changes whenever Medium, MaterialTable, MaterialColors, SpeedRatios,
+    /// OpacityRatios, Kernels or KernelWidth change: the change key reads it instead of
+    /// those tables, which would cost every frame.
+    unsigned long TablesVersion = 0;
     // Materials (at most 8): a table of material indices over the normalised scalar
     // (-1: none), colours, albedos, ratio tables (materials^2, row = the sample's
     // material) and each one's kernel.

@@ -237,3 +237,30 @@ TEST(TransportVolume, ClippedOrCroppedOccluderCastsNoShadow)
     }
   }
 }
+
+TEST(TransportVolume, RebuiltOnlyWhenWhatItDependsOnChanges)
+{
+  const int n = 24;
+  auto image = MakeVolume(n, 1.0, Slab(8, 15));
+  TransportScene scene(image, 0.3);
+  scene.SetDirectional(0, 0, 1);
+  vtkRenderWindow* window = scatterer_testing::SharedWindow();
+  window->AddRenderer(scene.Renderer);
+  vtkScattererTransportVolume* transport = scene.Mapper->GetTransportVolume();
+  window->Render();
+  const int first = transport->GetBuildCount();
+  ASSERT_GE(first, 1);
+  // The camera moves under a scene light: nothing to rebuild.
+  scene.Renderer->GetActiveCamera()->Azimuth(20);
+  window->Render();
+  EXPECT_EQ(transport->GetBuildCount(), first) << "a camera move rebuilt the transport volume";
+  // The opacity transfer function changes: the tables and the volume are rebuilt.
+  scene.Property->GetScalarOpacity()->AddPoint(150, 0.05);
+  window->Render();
+  EXPECT_EQ(transport->GetBuildCount(), first + 1) << "a transfer function edit was not seen";
+  // The light moves: rebuilt again.
+  scene.SetDirectional(1, 0, 1);
+  window->Render();
+  EXPECT_EQ(transport->GetBuildCount(), first + 2) << "a light move was not seen";
+  window->RemoveRenderer(scene.Renderer);
+}
