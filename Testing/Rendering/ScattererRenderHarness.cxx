@@ -1,6 +1,7 @@
 #include "ScattererRenderHarness.h"
 
 #include "vtkImageData.h"
+#include "vtkLight.h"
 #include "vtkPNGWriter.h"
 #include "vtkPointData.h"
 #include "vtkAbstractMapper.h"
@@ -47,6 +48,18 @@ std::vector<unsigned char> RenderSceneOnce(vtkRenderer* renderer, vtkAbstractMap
   window->RemoveRenderer(renderer);
   mapper->ReleaseGraphicsResources(window);
   return pixels;
+}
+
+vtkLight* AddSceneLight(
+  vtkRenderer* renderer, double px, double py, double pz, double fx, double fy, double fz)
+{
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->PositionalOff();
+  light->SetPosition(px, py, pz);
+  light->SetFocalPoint(fx, fy, fz);
+  renderer->AddLight(light);
+  return light;
 }
 
 unsigned int TakeGLError()

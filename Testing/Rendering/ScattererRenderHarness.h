@@ -11,6 +11,7 @@
 #include <vector>
 
 class vtkAbstractMapper;
+class vtkLight;
 class vtkObject;
 class vtkRenderer;
 class vtkRenderWindow;
@@ -29,6 +30,13 @@ std::vector<unsigned char> RenderAndGrab(vtkRenderWindow* window);
  * scene starts afresh.
  */
 std::vector<unsigned char> RenderSceneOnce(vtkRenderer* renderer, vtkAbstractMapper* mapper);
+
+/**
+ * Adds a white directional scene light to @p renderer that shines from @p position
+ * towards @p focalPoint, and returns it (the renderer holds it).
+ */
+vtkLight* AddSceneLight(vtkRenderer* renderer, double px, double py, double pz, double fx = 0.0,
+  double fy = 0.0, double fz = 0.0);
 
 /** OpenGL errors raised since the last call (0 = none); clears them. */
 unsigned int TakeGLError();

@@ -5,7 +5,6 @@
 
 #include "vtkCamera.h"
 #include "vtkImageData.h"
-#include "vtkLight.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLGPUVolumeRayCastMapper.h"
@@ -64,11 +63,7 @@ struct Stage
     this->Volume->SetProperty(this->Property);
     this->Renderer->AddVolume(this->Volume);
     this->Renderer->AutomaticLightCreationOff();
-    vtkNew<vtkLight> light;
-    light->SetLightTypeToSceneLight();
-    light->SetPosition(1, 0.5, 0.8);
-    light->SetFocalPoint(0, 0, 0);
-    this->Renderer->AddLight(light);
+    scatterer_testing::AddSceneLight(this->Renderer, 1, 0.5, 0.8);
     this->Renderer->GetActiveCamera()->SetPosition(80, -40, 60);
     this->Renderer->GetActiveCamera()->SetFocalPoint(16, 16, 16);
     vtkRenderWindow* w = scatterer_testing::SharedWindow();

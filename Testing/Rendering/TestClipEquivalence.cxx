@@ -17,7 +17,6 @@
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkImageData.h"
-#include "vtkLight.h"
 #include "vtkNew.h"
 #include "vtkOpenGLGPUVolumeRayCastMapper.h"
 #include "vtkPiecewiseFunction.h"
@@ -107,14 +106,9 @@ std::vector<unsigned char> Render(vtkImageData* image, bool clip, Mode mode)
   vtkNew<vtkRenderer> renderer;
   renderer->AddVolume(volume);
   renderer->AutomaticLightCreationOff();
-  vtkNew<vtkLight> light;
-  light->SetLightTypeToSceneLight();
-  light->PositionalOff();
   // From the removed side (+x) and above. z is the dominant axis, so the sweep's steps
   // along it do not all land on the plane x = 27.5, where nearest lookups would tie.
-  light->SetFocalPoint(0, 0, 0);
-  light->SetPosition(0.8, 0.3, 1.0);
-  renderer->AddLight(light);
+  scatterer_testing::AddSceneLight(renderer, 0.8, 0.3, 1.0);
   vtkCamera* camera = renderer->GetActiveCamera();
   const double c = 0.5 * (N - 1);
   camera->SetFocalPoint(c, c, c);

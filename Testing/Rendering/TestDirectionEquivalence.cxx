@@ -12,7 +12,6 @@
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkImageData.h"
-#include "vtkLight.h"
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
@@ -129,13 +128,8 @@ std::vector<unsigned char> Render(vtkImageData* image, vtkMatrix4x4* user, Mode 
   vtkNew<vtkRenderer> renderer;
   renderer->AddVolume(volume);
   renderer->AutomaticLightCreationOff();
-  vtkNew<vtkLight> light;
-  light->SetLightTypeToSceneLight();
-  light->PositionalOff();
-  light->SetFocalPoint(0, 0, 0);
   // From -x and above: the stem shadows the foot.
-  light->SetPosition(-0.7, 0.25, 0.65);
-  renderer->AddLight(light);
+  scatterer_testing::AddSceneLight(renderer, -0.7, 0.25, 0.65);
   // The camera frames the rotated volume: its centre is origin + R (spacing * middle).
   auto r = Rotation();
   double local[4] = { kSpacing[0] * 0.5 * (NX - 1), kSpacing[1] * 0.5 * (NY - 1),

@@ -9,7 +9,6 @@
 
 #include "vtkCamera.h"
 #include "vtkImageData.h"
-#include "vtkLight.h"
 #include "vtkNew.h"
 #include "vtkOpenGLGPUVolumeRayCastMapper.h"
 #include "vtkRenderWindow.h"
@@ -61,11 +60,7 @@ TEST(LifecycleSoak, FiveHundredFramesStayBoundedAndCorrect)
   vtkNew<vtkRenderer> renderer;
   renderer->AddVolume(volume);
   renderer->AutomaticLightCreationOff();
-  vtkNew<vtkLight> light;
-  light->SetLightTypeToSceneLight();
-  light->SetPosition(1, 0.5, 0.8);
-  light->SetFocalPoint(0, 0, 0);
-  renderer->AddLight(light);
+  scatterer_testing::AddSceneLight(renderer, 1, 0.5, 0.8);
   renderer->GetActiveCamera()->SetPosition(60, -25, 40);
   renderer->GetActiveCamera()->SetFocalPoint(12, 12, 12);
   vtkRenderWindow* window = scatterer_testing::SharedWindow();

@@ -91,11 +91,7 @@ struct Scene
     this->Renderer->AutomaticLightCreationOff();
     for (int l = 0; l < lights; ++l)
     {
-      vtkNew<vtkLight> light;
-      light->SetLightTypeToSceneLight();
-      light->SetPosition(1.0, 0.4 - l, 0.8);
-      light->SetFocalPoint(0, 0, 0);
-      this->Renderer->AddLight(light);
+      scatterer_testing::AddSceneLight(this->Renderer, 1.0, 0.4 - l, 0.8);
     }
     vtkCamera* camera = this->Renderer->GetActiveCamera();
     camera->SetFocalPoint(0.5 * N, 0.5 * N, 0.5 * N);

@@ -12,7 +12,6 @@
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkImageData.h"
-#include "vtkLight.h"
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkRenderWindow.h"
@@ -92,12 +91,8 @@ std::vector<unsigned char> RenderOwnedPart(
   vtkNew<vtkRenderer> renderer;
   renderer->AddVolume(volume);
   renderer->AutomaticLightCreationOff();
-  vtkNew<vtkLight> light;
-  light->SetLightTypeToSceneLight();
-  light->PositionalOff();
-  light->SetPosition(NX + 100, 0.5 * NY, 0.5 * NZ);
-  light->SetFocalPoint(NX, 0.5 * NY, 0.5 * NZ);
-  renderer->AddLight(light);
+  scatterer_testing::AddSceneLight(
+    renderer, NX + 100, 0.5 * NY, 0.5 * NZ, NX, 0.5 * NY, 0.5 * NZ);
   vtkCamera* camera = renderer->GetActiveCamera();
   // From the far end, so rays reach the crop plane x = 48 at its back rather than
   // grazing along it (where a sample just inside or outside the plane would flip
