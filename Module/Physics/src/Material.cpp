@@ -56,6 +56,11 @@ void Material::validate() const
     throw std::invalid_argument(
       "Material: name must be at most 255 bytes, got " + std::to_string(name.size()));
   }
+  // A NUL would silently cut the name short wherever it becomes a C string (VTK).
+  if (const auto nul = name.find('\0'); nul != std::string::npos) {
+    throw std::invalid_argument(
+      "Material: name must not contain a NUL byte, found one at name byte " + std::to_string(nul));
+  }
   requireRange(*this, "opacity", opacity, 0.0, 1.0);
   requireRange(*this, "refractiveIndex", refractiveIndex, kMinRefractiveIndex,
     kMaxRefractiveIndex);

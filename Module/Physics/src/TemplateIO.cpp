@@ -32,6 +32,15 @@ std::uint64_t fnv1a(const std::uint8_t* data, std::size_t size)
   return hash;
 }
 
+std::uint64_t load64(const std::uint8_t* p)
+{
+  std::uint64_t v = 0;
+  for (int i = 0; i < 8; ++i) {
+    v |= static_cast<std::uint64_t>(p[i]) << (8 * i);
+  }
+  return v;
+}
+
 // What the reader accepts is exactly what the writer may write: one check for both.
 std::string templateProblem(const Template& t)
 {
@@ -107,9 +116,12 @@ public:
   {
   }
 
-  [[noreturn]] void fail(const std::string& what) const
+  [[noreturn]] void fail(const std::string& what) const { failAt(pos_, what); }
+  // For a problem with an earlier byte than the next one: the offset of the field or
+  // byte at fault.
+  [[noreturn]] void failAt(std::size_t at, const std::string& what) const
   {
-    throw std::runtime_error(source_ + ": " + what + " (at byte " + std::to_string(pos_) + ")");
+    throw std::runtime_error(source_ + ": " + what + " (at byte " + std::to_string(at) + ")");
   }
   std::size_t remaining() const { return size_ - pos_; }
   std::size_t position() const { return pos_; }
@@ -228,11 +240,18 @@ void writeMaterial(Writer& w, const Material& m)
   w.u32(static_cast<std::uint32_t>(m.selector.label));
 }
 
-Material readMaterial(Reader& r)
+Material readMaterial(Reader& r, std::uint32_t index)
 {
   Material m;
   const std::uint8_t nameLength = r.u8("material name length");
+  const std::size_t nameAt = r.position();
   const std::uint8_t* name = r.take(nameLength, "material name");
+  // A NUL would cut the name short wherever it is used as a C string (VTK, messages).
+  if (const void* nul = std::memchr(name, 0, nameLength)) {
+    const auto i = static_cast<std::size_t>(static_cast<const std::uint8_t*>(nul) - name);
+    r.failAt(nameAt + i, "material " + std::to_string(index) + ": name has a NUL byte (name byte " +
+      std::to_string(i) + " of " + std::to_string(nameLength) + ")");
+  }
   m.name.assign(reinterpret_cast<const char*>(name), nameLength);
   m.opacity = r.f64("opacity");
   m.refractiveIndex = r.f64("refractiveIndex");
@@ -273,17 +292,29 @@ void writeTemplate(Writer& w, const Template& t)
   }
 }
 
-Template readTemplate(Reader& r)
+// The settings' caps bound every template the generator makes; a file whose templates
+// exceed them did not come from those settings.
+Template readTemplate(Reader& r, const GeneratorSettings& s)
 {
   Template t;
+  const std::size_t photonsAt = r.position();
   const std::uint32_t photons =
     r.count("photon count", static_cast<std::uint32_t>(kMaxPhotonsCap), kPhotonBytes);
+  if (photons > static_cast<std::uint32_t>(s.maxPhotonsPerTemplate)) {
+    r.failAt(photonsAt, "photon count " + std::to_string(photons) +
+      " exceeds the settings' maxPhotonsPerTemplate " + std::to_string(s.maxPhotonsPerTemplate));
+  }
   const std::uint8_t capped = r.u8("capped flag");
   if (capped > 1) {
     r.fail("capped flag must be 0 or 1, got " + std::to_string(capped));
   }
   t.capped = capped == 1;
+  const std::size_t eventsAt = r.position();
   t.events = r.u64("event count");
+  if (t.events > static_cast<std::uint64_t>(s.maxEventsPerTemplate)) {
+    r.failAt(eventsAt, "event count " + std::to_string(t.events) +
+      " exceeds the settings' maxEventsPerTemplate " + std::to_string(s.maxEventsPerTemplate));
+  }
   EnergyLedger& l = t.ledger;
   l.initial = r.f64("ledger.initial");
   l.stored = r.f64("ledger.stored");
@@ -321,17 +352,24 @@ std::vector<std::uint8_t> serialize(const TemplateSet& set)
   for (std::size_t m = 0; m < set.materials.size(); ++m) {
     const MaterialTemplates& mt = set.materials[m];
     mt.material.validate();
-    if (mt.templates.size() > static_cast<std::size_t>(kMaxTemplatesPerMaterial)) {
-      throw std::invalid_argument("writeTemplates: material " + std::to_string(m) +
-        " has more than " + std::to_string(kMaxTemplatesPerMaterial) + " templates");
+    if (mt.templates.size() != static_cast<std::size_t>(set.settings.templatesPerMaterial)) {
+      throw std::invalid_argument("writeTemplates: material " + std::to_string(m) + " has " +
+        std::to_string(mt.templates.size()) + " templates, but settings.templatesPerMaterial is " +
+        std::to_string(set.settings.templatesPerMaterial));
     }
     writeMaterial(w, mt.material);
     w.u32(static_cast<std::uint32_t>(mt.templates.size()));
     for (std::size_t t = 0; t < mt.templates.size(); ++t) {
       const Template& tpl = mt.templates[t];
-      std::string problem = tpl.photons.size() > static_cast<std::size_t>(kMaxPhotonsCap)
-        ? "too many photons"
-        : templateProblem(tpl);
+      std::string problem = templateProblem(tpl);
+      if (tpl.photons.size() > static_cast<std::size_t>(set.settings.maxPhotonsPerTemplate)) {
+        problem = std::to_string(tpl.photons.size()) +
+          " photons exceed settings.maxPhotonsPerTemplate " +
+          std::to_string(set.settings.maxPhotonsPerTemplate);
+      } else if (tpl.events > static_cast<std::uint64_t>(set.settings.maxEventsPerTemplate)) {
+        problem = std::to_string(tpl.events) + " events exceed settings.maxEventsPerTemplate " +
+          std::to_string(set.settings.maxEventsPerTemplate);
+      }
       if (!problem.empty()) {
         throw std::invalid_argument("writeTemplates: material " + std::to_string(m) +
           " template " + std::to_string(t) + ": " + problem);
@@ -369,21 +407,43 @@ TemplateSet parse(const std::uint8_t* data, std::size_t size, const std::string&
   TemplateSet set;
   set.settings = readSettings(r);
   const std::uint32_t materials = r.count("material count", kMaxFileMaterials, kMinMaterialBytes);
+  // Whether the last 8 bytes are the checksum of the rest: then a count that disagrees
+  // with the records is named as such rather than as corruption.
+  const bool intact = size >= 8 && fnv1a(data, size - 8) == load64(data + size - 8);
   set.materials.reserve(materials);
   for (std::uint32_t m = 0; m < materials; ++m) {
+    if (r.remaining() == 8 && intact) { // only the checksum is left
+      r.fail("the header counts " + std::to_string(materials) + " materials, but the file " +
+        "holds " + std::to_string(m));
+    }
     MaterialTemplates mt;
-    mt.material = readMaterial(r);
+    mt.material = readMaterial(r, m);
+    // The settings promise templatesPerMaterial templates for every material; a file
+    // holding fewer (0 loads as a set without photons) or more did not come from them.
+    const std::size_t templatesAt = r.position();
     const std::uint32_t templates = r.count("template count",
       static_cast<std::uint32_t>(kMaxTemplatesPerMaterial), kTemplateHeaderBytes);
+    if (templates != static_cast<std::uint32_t>(set.settings.templatesPerMaterial)) {
+      r.failAt(templatesAt, "material " + std::to_string(m) + " holds " +
+        std::to_string(templates) + " templates, but the settings' templatesPerMaterial is " +
+        std::to_string(set.settings.templatesPerMaterial));
+    }
     mt.templates.reserve(templates);
     for (std::uint32_t t = 0; t < templates; ++t) {
-      mt.templates.push_back(readTemplate(r));
+      mt.templates.push_back(readTemplate(r, set.settings));
     }
     set.materials.push_back(std::move(mt));
   }
   const std::size_t payload = r.position();
   const std::uint64_t stored = r.u64("checksum");
-  if (stored != fnv1a(data, payload)) {
+  const bool checksumMatches = r.remaining() == 0 ? intact : stored == fnv1a(data, payload);
+  if (!checksumMatches) {
+    if (r.remaining() > 0 && intact) {
+      // Not corrupted: the counted records end before the checksum.
+      r.failAt(payload, "the records of the header's material count " +
+        std::to_string(materials) + " end " + std::to_string(size - 8 - payload) +
+        " bytes before the checksum: a count disagrees with the content");
+    }
     r.fail("checksum mismatch (file corrupted)");
   }
   if (r.remaining() != 0) {

@@ -25,7 +25,7 @@ struct Selector {
 };
 
 struct Material {
-  std::string name;              // for messages and files only; at most 255 bytes
+  std::string name;              // for messages and files only; at most 255 bytes, no NUL
   double opacity = 0.5;          // the paper's 1 - T(d), in [0, 1]: extinction per template radius
   double refractiveIndex = 1.4;  // n > 0; 1.4 is typical of soft tissue
   glm::vec3 diffuse{1.0f, 1.0f, 1.0f}; // RGB in [0, 1]

@@ -34,14 +34,17 @@ constexpr std::size_t kMaxTemplateFileBytes = std::size_t(256) << 20;
 constexpr std::uint32_t kMaxFileMaterials = 4096;
 
 // Throw std::invalid_argument if the set breaks an invariant the reader checks
-// (invalid material/settings, unsorted or non-finite photons, a ledger that does not
-// close), and std::runtime_error when the stream or file cannot be written.
+// (invalid material/settings, a NUL in a material name, a material without exactly
+// settings.templatesPerMaterial templates, a template over the settings' photon or event
+// cap, unsorted or non-finite photons, a ledger that does not close), and
+// std::runtime_error when the stream or file cannot be written.
 void writeTemplates(std::ostream& out, const TemplateSet& set);
 void saveTemplates(const std::string& path, const TemplateSet& set);
 
 // Throw std::runtime_error with a message saying what is wrong and where (missing file,
-// truncation, bad magic, unsupported version, absurd counts, invalid values, checksum
-// mismatch, trailing bytes). Never allocates more than a small multiple of the input size.
+// truncation, bad magic, unsupported version, absurd counts, counts that disagree with
+// the settings or the content, a NUL in a name, invalid values, checksum mismatch,
+// trailing bytes). Never allocates more than a small multiple of the input size.
 TemplateSet parseTemplates(const std::uint8_t* data, std::size_t size);
 TemplateSet readTemplates(std::istream& in);
 TemplateSet loadTemplates(const std::string& path);
