@@ -17,10 +17,16 @@
 #include "vtkXMLImageDataReader.h"
 #include "vtksys/SystemTools.hxx"
 
-#include "ScattererRawSizeCheck.h"
+#include "ScattererVolumeHeaderCheck.h"
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <exception>
+#include <iostream>
+#include <new>
+#include <sstream>
+#include <vector>
 
 vtkStandardNewMacro(vtkScattererVolumeReader);
 
@@ -37,34 +43,66 @@ bool EndsWith(const std::string& s, const std::string& suffix)
   return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
-// Collects the errors a delegate reader reports instead of letting them print.
+// Collects the errors a delegate reader reports instead of letting them print, as one
+// line: what the reader said, without VTK's source location and object address.
 struct ErrorSink
 {
-  std::string Messages;
+  std::vector<std::string> Messages;
+  bool ExecutiveFailed = false;
   vtkNew<vtkCallbackCommand> Command;
   ErrorSink()
   {
     this->Command->SetClientData(this);
     this->Command->SetCallback([](vtkObject*, unsigned long, void* client, void* call) {
-      auto* self = static_cast<ErrorSink*>(client);
-      std::string text = call ? static_cast<const char*>(call) : "unknown error";
-      // VTK's messages start with "ERROR: In <file>, line N\nvtkClass (0x..): text";
-      // keep the last line, which says what went wrong.
-      while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
-      {
-        text.pop_back();
-      }
-      auto pos = text.rfind("): ");
-      if (pos != std::string::npos)
-      {
-        text = text.substr(pos + 3);
-      }
-      if (!self->Messages.empty())
-      {
-        self->Messages += "; ";
-      }
-      self->Messages += text;
+      static_cast<ErrorSink*>(client)->Add(call ? static_cast<const char*>(call) : "");
     });
+  }
+  void Add(std::string text)
+  {
+    // VTK's messages read "ERROR: In <file>, line N\n<vtkClass> (0x..): <text>\n\n".
+    if (text.compare(0, 10, "ERROR: In ") == 0 && text.find('\n') != std::string::npos)
+    {
+      text = text.substr(text.find('\n') + 1);
+    }
+    const auto prefix = text.find("): ");
+    if (prefix != std::string::npos && prefix < text.find('\n') && text.find(" (0x") < prefix)
+    {
+      text = text.substr(prefix + 3);
+    }
+    // The executive's "Algorithm ... returned failure for request: <vtkInformation dump>"
+    // only repeats that the reader failed; its dump runs over many lines.
+    if (text.find("returned failure for request") != std::string::npos)
+    {
+      this->ExecutiveFailed = true;
+      return;
+    }
+    text = text.substr(0, text.find('\n'));
+    while (!text.empty() && (text.back() == ' ' || text.back() == '\r' || text.back() == '.'))
+    {
+      text.pop_back();
+    }
+    if (text.empty())
+    {
+      text = "unknown error";
+    }
+    if (std::find(this->Messages.begin(), this->Messages.end(), text) == this->Messages.end())
+    {
+      this->Messages.push_back(text);
+    }
+  }
+  bool Failed() const { return this->ExecutiveFailed || !this->Messages.empty(); }
+  std::string Text() const
+  {
+    if (this->Messages.empty())
+    {
+      return "VTK's reader failed without saying why";
+    }
+    std::string joined;
+    for (const std::string& message : this->Messages)
+    {
+      joined += (joined.empty() ? "" : "; ") + message;
+    }
+    return joined;
   }
   void Watch(vtkAlgorithm* algorithm)
   {
@@ -72,6 +110,73 @@ struct ErrorSink
     algorithm->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, this->Command);
   }
 };
+
+// MetaIO (inside vtkMetaImageReader) reports read errors such as "Uncompress failed" or
+// "data not read completely" only on std::cerr, and goes on with a partly filled volume.
+// While a MetaImage is read, std::cerr is redirected here so that such a report fails the
+// read. (std::cerr is process-wide: output of other threads in that moment lands here too.)
+class CerrCapture
+{
+public:
+  CerrCapture()
+    : Previous(std::cerr.rdbuf(this->Buffer.rdbuf()))
+  {
+  }
+  ~CerrCapture() { std::cerr.rdbuf(this->Previous); }
+  CerrCapture(const CerrCapture&) = delete;
+  CerrCapture& operator=(const CerrCapture&) = delete;
+
+  // The reports, one line; MetaIO's deprecation notes are not errors.
+  std::string Errors() const
+  {
+    std::istringstream lines(this->Buffer.str());
+    std::string line;
+    std::string errors;
+    while (std::getline(lines, line))
+    {
+      const auto b = line.find_first_not_of(" \t\r");
+      if (b == std::string::npos || line.find("deprecated") != std::string::npos)
+      {
+        continue;
+      }
+      line = line.substr(b, line.find_last_not_of(" \t\r") - b + 1);
+      errors += (errors.empty() ? "" : " ") + line;
+    }
+    return errors;
+  }
+
+private:
+  std::ostringstream Buffer;
+  std::streambuf* Previous;
+};
+
+std::string Describe(const scatterer_io::VolumeLayout& layout)
+{
+  std::ostringstream out;
+  out << layout.Dimensions[0] << "x" << layout.Dimensions[1] << "x" << layout.Dimensions[2]
+      << " grid of " << layout.Components << "-component voxels, spacing (" << layout.Spacing[0]
+      << ", " << layout.Spacing[1] << ", " << layout.Spacing[2] << "), origin ("
+      << layout.Origin[0] << ", " << layout.Origin[1] << ", " << layout.Origin[2] << ")";
+  return out.str();
+}
+
+bool Same(double a, double b)
+{
+  return std::fabs(a - b) <= 1e-9 * std::max(std::fabs(a), std::fabs(b));
+}
+
+bool SameLayout(const scatterer_io::VolumeLayout& a, const scatterer_io::VolumeLayout& b)
+{
+  for (int i = 0; i < 3; ++i)
+  {
+    if (a.Dimensions[i] != b.Dimensions[i] || !Same(a.Spacing[i], b.Spacing[i]) ||
+      !Same(a.Origin[i], b.Origin[i]))
+    {
+      return false;
+    }
+  }
+  return a.Components == b.Components;
+}
 }
 
 vtkScattererVolumeReader::vtkScattererVolumeReader()
@@ -106,6 +211,31 @@ bool vtkScattererVolumeReader::ReadIntoCache()
     this->Fail("No input path was given (SetFileName).");
     return false;
   }
+  // Nothing a file holds may crash the program: whatever escapes the checks and VTK's
+  // readers as an exception becomes an error naming the file.
+  try
+  {
+    return this->ReadChecked();
+  }
+  catch (const std::bad_alloc&)
+  {
+    this->Fail("Cannot read volume '" + path + "': not enough memory for it.");
+  }
+  catch (const std::exception& e)
+  {
+    this->Fail("Cannot read volume '" + path + "': reading failed with an exception (" +
+      e.what() + ").");
+  }
+  catch (...)
+  {
+    this->Fail("Cannot read volume '" + path + "': reading failed with an unknown exception.");
+  }
+  return false;
+}
+
+bool vtkScattererVolumeReader::ReadChecked()
+{
+  const std::string& path = this->FileName;
   if (!vtksys::SystemTools::FileExists(path))
   {
     this->Fail("Cannot read volume '" + path + "': no such file or directory.");
@@ -114,7 +244,10 @@ bool vtkScattererVolumeReader::ReadIntoCache()
 
   const std::string lower = LowerCase(path);
   vtkSmartPointer<vtkAlgorithm> reader;
-  std::string sizeProblem;
+  // Formats with a header are validated before VTK's reader sees them (VTK 9.1's readers
+  // crash on or misread bad headers; ScattererVolumeHeaderCheck.h).
+  bool checked = false;
+  scatterer_io::HeaderCheck header;
   if (vtksys::SystemTools::FileIsDirectory(path))
   {
     this->FormatName = "DICOM series";
@@ -125,7 +258,8 @@ bool vtkScattererVolumeReader::ReadIntoCache()
   else if (EndsWith(lower, ".mhd") || EndsWith(lower, ".mha"))
   {
     this->FormatName = "MetaImage";
-    sizeProblem = scatterer_io::CheckMetaImageSize(path);
+    header = scatterer_io::CheckMetaImageHeader(path);
+    checked = true;
     auto meta = vtkSmartPointer<vtkMetaImageReader>::New();
     meta->SetFileName(path.c_str());
     reader = meta;
@@ -133,7 +267,8 @@ bool vtkScattererVolumeReader::ReadIntoCache()
   else if (EndsWith(lower, ".nii") || EndsWith(lower, ".nii.gz"))
   {
     this->FormatName = "NIfTI";
-    sizeProblem = scatterer_io::CheckNiftiSize(path);
+    header = scatterer_io::CheckNiftiHeader(path);
+    checked = true;
     auto nifti = vtkSmartPointer<vtkNIFTIImageReader>::New();
     nifti->SetFileName(path.c_str());
     reader = nifti;
@@ -148,7 +283,8 @@ bool vtkScattererVolumeReader::ReadIntoCache()
   else if (EndsWith(lower, ".nrrd") || EndsWith(lower, ".nhdr"))
   {
     this->FormatName = "NRRD";
-    sizeProblem = scatterer_io::CheckNrrdSize(path);
+    header = scatterer_io::CheckNrrdHeader(path);
+    checked = true;
     auto nrrd = vtkSmartPointer<vtkNrrdReader>::New();
     nrrd->SetFileName(path.c_str());
     reader = nrrd;
@@ -160,21 +296,47 @@ bool vtkScattererVolumeReader::ReadIntoCache()
       "folder).");
     return false;
   }
-  if (!sizeProblem.empty())
+  const std::string failure = "Cannot read " + this->FormatName + " volume '" + path + "': ";
+  if (!header.Problem.empty())
   {
-    this->Fail("Cannot read " + this->FormatName + " volume '" + path + "': " + sizeProblem);
+    this->Fail(failure + header.Problem);
     return false;
   }
 
   ErrorSink sink;
   sink.Watch(reader);
-  reader->Update();
-  vtkImageData* image = vtkImageData::SafeDownCast(reader->GetOutputDataObject(0));
-  if (!sink.Messages.empty())
+  std::string ioErrors;
+  if (this->FormatName == "MetaImage")
   {
-    this->Fail("Cannot read " + this->FormatName + " volume '" + path + "': " + sink.Messages);
+    CerrCapture capture;
+    reader->Update();
+    ioErrors = capture.Errors();
+  }
+  else
+  {
+    reader->Update();
+  }
+  if (sink.Failed() || !ioErrors.empty())
+  {
+    std::string why = sink.Failed() ? sink.Text() : "MetaIO reports: " + ioErrors;
+    if (this->FormatName == "DICOM series" &&
+      why.find("does not contain any DICOM images") != std::string::npos)
+    {
+      // vtkDICOMImageReader's words ("Couldn't get sorted files. Slices may be in wrong
+      // order!; Either a filename was not specified or ...") describe its own state.
+      why = "the folder holds no DICOM images that VTK's DICOM reader can parse";
+    }
+    if (checked && header.Encoding == "gzip" && why.find("gzip") != std::string::npos)
+    {
+      // vtkNrrdReader's own words ("Couldn't read gzip data from nrrd file: <path>
+      // 330/64, GetHeaderSize(): 64") do not say what is wrong with the file.
+      why = "its gzip data is corrupt or truncated: zlib could not decode all the voxels the "
+            "header promises";
+    }
+    this->Fail(failure + why + ".");
     return false;
   }
+  vtkImageData* image = vtkImageData::SafeDownCast(reader->GetOutputDataObject(0));
   int dims[3] = { 0, 0, 0 };
   if (image)
   {
@@ -184,14 +346,37 @@ bool vtkScattererVolumeReader::ReadIntoCache()
   vtkDataArray* scalars = image ? image->GetPointData()->GetScalars() : nullptr;
   if (points <= 0 || dims[0] <= 0 || dims[1] <= 0 || dims[2] <= 0)
   {
-    this->Fail("Cannot read " + this->FormatName + " volume '" + path +
-      "': the file holds no voxels (empty, truncated or not a volume).");
+    this->Fail(failure + "the file holds no voxels (empty, truncated or not a volume).");
     return false;
   }
   if (!scalars || scalars->GetNumberOfTuples() != points)
   {
-    this->Fail("Cannot read " + this->FormatName + " volume '" + path +
-      "': the voxel values are missing or fewer than the grid needs (truncated file?).");
+    this->Fail(failure +
+      "the voxel values are missing or fewer than the grid needs (truncated file?).");
+    return false;
+  }
+
+  // What VTK delivered must be what the header promised, and sound for rendering (for
+  // DICOM and VTK XML images this is the only check of spacing and origin).
+  scatterer_io::VolumeLayout delivered;
+  for (int i = 0; i < 3; ++i)
+  {
+    delivered.Dimensions[i] = dims[i];
+    delivered.Spacing[i] = image->GetSpacing()[i];
+    delivered.Origin[i] = image->GetOrigin()[i];
+  }
+  delivered.Components = scalars->GetNumberOfComponents();
+  if (checked && !SameLayout(delivered, header.Layout))
+  {
+    this->Fail(failure + "VTK's reader delivered a " + Describe(delivered) +
+      ", but the header promises a " + Describe(header.Layout) +
+      "; refusing a volume that may be misread.");
+    return false;
+  }
+  const std::string layoutProblem = scatterer_io::CheckLayout(delivered, checked);
+  if (!layoutProblem.empty())
+  {
+    this->Fail(failure + layoutProblem);
     return false;
   }
   this->Cached = vtkSmartPointer<vtkImageData>::New();

@@ -9,9 +9,16 @@
  * file fails with one clear message (vtkErrorMacro, also kept in
  * GetErrorMessage()) instead of an empty or garbage volume.
  *
- * Truncation is caught before reading for raw formats by comparing the bytes
- * the header promises with the bytes on disk, and for compressed and XML
- * formats by the underlying reader's own errors.
+ * MetaImage, NRRD and NIfTI headers are validated before VTK's reader sees
+ * them (ScattererVolumeHeaderCheck.h): VTK 9.1's readers crash on some bad
+ * headers (a negative channel count, a dimension that disagrees with the
+ * sizes, an unknown NIfTI datatype) and silently misread others (a HeaderSize
+ * past the data, raw data flagged as compressed, ascii junk, NaN or zero
+ * spacing, a truncated file). The checks also compare the header with the
+ * data behind it. After reading, the volume VTK delivered must match the grid
+ * the header promised and have a finite, positive spacing and a finite origin
+ * (for every format). Any exception a reader throws becomes an error too, so
+ * no file makes ReadVolume crash.
  */
 #ifndef vtkScattererVolumeReader_h
 #define vtkScattererVolumeReader_h
@@ -57,8 +64,10 @@ protected:
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  /** Reads the whole volume into Cached; on failure sets ErrorMessage. */
+  /** Reads the whole volume into Cached; on failure sets ErrorMessage. Never throws. */
   bool ReadIntoCache();
+  /** ReadIntoCache's work: validate the header, read, compare with the header. */
+  bool ReadChecked();
   void Fail(const std::string& message);
 
   std::string FileName;

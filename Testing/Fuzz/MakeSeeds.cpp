@@ -4,12 +4,16 @@
 //   internal reflection at the caps, invalid values); each is decoded back and checked.
 // template_reader/: small valid template files (from the generator with tiny caps), an
 //   empty set and a truncated file.
+// volume_headers/: small MetaImage, NRRD and NIfTI files in the layouts of
+//   VolumeHeaderInput.h (each valid kind, plus the bad headers of issue 13).
 #include "GeneratorInput.h"
+#include "VolumeHeaderInput.h"
 
 #include <scatterer/Template.h>
 #include <scatterer/TemplateIO.h>
 
 #include <cstdio>
+#include <cstring>
 #include <cstdlib>
 #include <fstream>
 #include <limits>
@@ -149,6 +153,145 @@ Material material(const char* name, double opacity, double n)
   return m;
 }
 
+// 16-bit little-endian voxels n * 37 - 400, so that no two neighbours are equal.
+std::string shorts(int count)
+{
+  std::string bytes;
+  for (int n = 0; n < count; ++n) {
+    const auto v = static_cast<std::uint16_t>(n * 37 - 400);
+    bytes += static_cast<char>(v & 0xff);
+    bytes += static_cast<char>(v >> 8);
+  }
+  return bytes;
+}
+
+std::string asciiShorts(int count)
+{
+  std::string text;
+  for (int n = 0; n < count; ++n) {
+    text += std::to_string(n * 37 - 400) + (n % 10 == 9 ? "\n" : " ");
+  }
+  return text + "\n";
+}
+
+// A zlib stream of one stored deflate block.
+std::string zlibStored(const std::string& data)
+{
+  std::string out("\x78\x01", 2);
+  const auto len = static_cast<std::uint16_t>(data.size());
+  const auto nlen = static_cast<std::uint16_t>(~len);
+  out += '\x01';
+  out += static_cast<char>(len & 0xff);
+  out += static_cast<char>(len >> 8);
+  out += static_cast<char>(nlen & 0xff);
+  out += static_cast<char>(nlen >> 8);
+  out += data;
+  std::uint32_t a = 1, b = 0;
+  for (unsigned char c : data) {
+    a = (a + c) % 65521u;
+    b = (b + a) % 65521u;
+  }
+  const std::uint32_t adler = (b << 16) | a;
+  for (int i = 3; i >= 0; --i) {
+    out += static_cast<char>((adler >> (8 * i)) & 0xff);
+  }
+  return out;
+}
+
+// A little-endian NIfTI header for a 4x3x2 volume of the given type, data at vox_offset.
+std::string nifti1(std::int16_t datatype, std::int16_t bitpix)
+{
+  std::string h(352, '\0');
+  auto put = [&](int offset, const void* v, std::size_t n) { std::memcpy(&h[offset], v, n); };
+  const std::int32_t sizeofHdr = 348;
+  const std::int16_t dim[8] = { 3, 4, 3, 2, 1, 1, 1, 1 };
+  const float pixdim[8] = { 1.0f, 0.8f, 0.8f, 2.5f, 0, 0, 0, 0 };
+  const float voxOffset = 352.0f, slope = 1.0f;
+  put(0, &sizeofHdr, 4);
+  put(40, dim, sizeof dim);
+  put(70, &datatype, 2);
+  put(72, &bitpix, 2);
+  put(76, pixdim, sizeof pixdim);
+  put(108, &voxOffset, 4);
+  put(112, &slope, 4);
+  put(344, "n+1", 4);
+  return h;
+}
+
+std::string nifti2()
+{
+  std::string h(544, '\0');
+  auto put = [&](int offset, const void* v, std::size_t n) { std::memcpy(&h[offset], v, n); };
+  const std::int32_t sizeofHdr = 540;
+  const std::int16_t datatype = 4, bitpix = 16;
+  const std::int64_t dim[8] = { 3, 4, 3, 2, 1, 1, 1, 1 };
+  const double pixdim[8] = { 1.0, 0.8, 0.8, 2.5, 0, 0, 0, 0 };
+  const std::int64_t voxOffset = 544;
+  put(0, &sizeofHdr, 4);
+  put(4, "n+2\0\r\n\032\n", 8);
+  put(12, &datatype, 2);
+  put(14, &bitpix, 2);
+  put(16, dim, sizeof dim);
+  put(104, pixdim, sizeof pixdim);
+  put(168, &voxOffset, 8);
+  return h;
+}
+
+void writeVolumeSeed(const std::string& path, fuzz::VolumeFormat format, const std::string& header,
+  const std::string& data = std::string())
+{
+  const std::string bytes = fuzz::encodeVolumeInput(format, header, data);
+  write(path, std::vector<std::uint8_t>(bytes.begin(), bytes.end()));
+}
+
+void writeVolumeSeeds(const std::string& dir)
+{
+  using namespace fuzz;
+  const std::string meta = "ObjectType = Image\nNDims = 3\nDimSize = 4 3 2\nElementType = MET_SHORT\n"
+                           "ElementSpacing = 0.5 0.5 1.5\nOffset = -10 5 0\n";
+  writeVolumeSeed(dir + "mha-local", kMetaImageLocal, meta + "ElementDataFile = LOCAL\n" + shorts(24));
+  writeVolumeSeed(dir + "mhd-float-2-channels", kMetaImageDetached,
+    "NDims = 3\nDimSize = 3 2 2\nElementType = MET_FLOAT\nElementNumberOfChannels = 2\n"
+    "ElementDataFile = data.raw\n",
+    shorts(48));
+  writeVolumeSeed(dir + "mha-zlib", kMetaImageLocal,
+    meta + "CompressedData = True\nCompressedDataSize = 59\nElementDataFile = LOCAL\n" +
+      zlibStored(shorts(24)));
+  writeVolumeSeed(dir + "mha-ascii", kMetaImageLocal,
+    meta + "BinaryData = False\nElementDataFile = LOCAL\n" + asciiShorts(24));
+  writeVolumeSeed(dir + "mhd-header-size-minus-1", kMetaImageDetached,
+    meta + "HeaderSize = -1\nElementDataFile = data.raw\n", "0123456789abcdef" + shorts(24));
+  writeVolumeSeed(dir + "issue-mha-negative-channels", kMetaImageLocal,
+    meta + "ElementNumberOfChannels = -3\nElementDataFile = LOCAL\n" + shorts(24));
+  writeVolumeSeed(dir + "issue-mha-compressed-raw", kMetaImageLocal,
+    meta + "CompressedData = True\nElementDataFile = LOCAL\n" + shorts(24));
+
+  const std::string nrrd = "NRRD0004\n# seed\ntype: short\ndimension: 3\nspace: left-posterior-superior\n"
+                           "sizes: 10 2 2\nspace directions: (0.5,0,0) (0,0.5,0) (0,0,2)\n"
+                           "space origin: (-5,0,3)\nendian: little\n";
+  writeVolumeSeed(dir + "nrrd-raw", kNrrdAttached, nrrd + "encoding: raw\n\n" + shorts(40));
+  writeVolumeSeed(dir + "nrrd-gzip", kNrrdAttached, nrrd + "encoding: gzip\n\n" + gzipStored(shorts(40)));
+  writeVolumeSeed(dir + "nrrd-rgb", kNrrdAttached,
+    "NRRD0005\ntype: uchar\ndimension: 4\nsizes: 3 10 2 2\nkinds: RGB-color domain domain domain\n"
+    "spacings: nan 1 1 1\nencoding: raw\n\n" + std::string(120, '\x7f'));
+  writeVolumeSeed(dir + "nhdr-ascii", kNrrdDetached,
+    "NRRD0004\ntype: short\ndimension: 3\nsizes: 10 2 2\nencoding: ascii\ndata file: data.raw\n",
+    asciiShorts(40));
+  writeVolumeSeed(dir + "nhdr-raw-float", kNrrdDetached,
+    "NRRD0004\ntype: float\ndimension: 2\nsizes: 10 4\nspacings: 0.1 0.2\nencoding: raw\n"
+    "endian: little\ndatafile: data.raw\n",
+    shorts(80));
+  writeVolumeSeed(dir + "issue-nrrd-dimension-5", kNrrdAttached,
+    "NRRD0004\ntype: short\ndimension: 5\nsizes: 10 2 2\nencoding: raw\n\n" + shorts(40));
+
+  writeVolumeSeed(dir + "nii", kNifti, nifti1(4, 16) + shorts(24));
+  writeVolumeSeed(dir + "nii-rgb", kNifti, nifti1(128, 24) + std::string(72, '\x40'));
+  writeVolumeSeed(dir + "nii2", kNifti, nifti2() + shorts(24));
+  writeVolumeSeed(dir + "nii-gz", kNiftiGzipped, nifti1(16, 32) + shorts(48));
+  writeVolumeSeed(dir + "nii-gz-raw", kNiftiGzipRaw, gzipStored(nifti1(4, 16) + shorts(24)));
+  writeVolumeSeed(dir + "issue-nii-datatype-999", kNifti, nifti1(999, 16) + shorts(24));
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -232,5 +375,7 @@ int main(int argc, char** argv)
   write(rd + "empty-set", serialize(empty));
 
   write(rd + "truncated", std::vector<std::uint8_t>(oneBytes.begin(), oneBytes.begin() + 100));
+
+  writeVolumeSeeds(root + "/volume_headers/");
   return 0;
 }
