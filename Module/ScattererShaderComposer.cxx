@@ -1,5 +1,8 @@
 #include "ScattererShaderComposer.h"
 
+#include "ScattererSceneLights.h"
+#include "ScattererSceneMaterials.h"
+
 #include "scatterer_illumination_dec.h"
 #include "scatterer_shading_impl.h"
 #include "scatterer_shading_init.h"
@@ -110,15 +113,34 @@ std::map<std::string, bool> Flags(const Features& f)
     { "TRANSPORT", f.Transport }, { "PERSAMPLE", !f.Transport } };
 }
 
+// Limits, not the scene's counts, except the light slots (scatterer_illumination_dec.glsl).
 std::map<std::string, std::string> Values(const Features& f)
 {
-  return { { "LIGHTS", std::to_string(f.Lights) }, { "MATERIALS", std::to_string(f.Materials) } };
+  return { { "LIGHT_SLOTS", std::to_string(LightSlots(f)) },
+    { "MAX_MATERIALS", std::to_string(scatterer_scene::kMaxMaterials) } };
 }
+}
+
+int LightSlots(const Features& f)
+{
+  if (f.Transport)
+  {
+    return scatterer_scene::kMaxLights; // the transport shading has no per-light arrays
+  }
+  for (int slots : { 1, 2, 4 })
+  {
+    if (f.Lights <= slots)
+    {
+      return slots;
+    }
+  }
+  return scatterer_scene::kMaxLights;
 }
 
 std::string IlluminationDeclarations(const Features& features)
 {
-  return Preprocess(scatterer_illumination_dec, Flags(features), Values(features));
+  return std::string(kProgramMarker) + "\n" +
+    Preprocess(scatterer_illumination_dec, Flags(features), Values(features));
 }
 
 std::string ShadingInitialization(const Features& features)

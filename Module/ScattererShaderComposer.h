@@ -43,6 +43,16 @@ struct SCATTERERTEMPLATE_EXPORT Features
 SCATTERERTEMPLATE_EXPORT std::string Preprocess(const std::string& text, const std::map<std::string, bool>& flags,
   const std::map<std::string, std::string>& values);
 
+/**
+ * Light slots of the per-sample shader: the light count rounded up to 1, 2, 4 or
+ * the limit (6); fixed in transport mode. With the material limit, the only count
+ * the illumination text depends on, so that few texts (compiled programs) exist.
+ */
+SCATTERERTEMPLATE_EXPORT int LightSlots(const Features& features);
+
+/** First line of IlluminationDeclarations: how an illumination program is recognized. */
+constexpr const char* kProgramMarker = "// scatterer-template illumination program";
+
 /** Functions inserted after VTK's `//VTK::ComputeRayDirection::Dec` text. */
 SCATTERERTEMPLATE_EXPORT std::string IlluminationDeclarations(const Features& features);
 

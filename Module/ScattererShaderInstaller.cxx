@@ -1,6 +1,7 @@
 #include "ScattererShaderInstaller.h"
 
 #include "ScattererSceneLights.h"
+#include "ScattererSceneMaterials.h"
 
 #include "vtkOpenGLShaderProperty.h"
 #include "vtkShader.h"
@@ -8,6 +9,8 @@
 #include "vtkVolume.h"
 
 #include <algorithm>
+#include <type_traits>
+#include <vector>
 #include <cstring>
 
 namespace scatterer_shader
@@ -143,12 +146,23 @@ void SetIlluminationUniforms(
   u->SetUniform3f(name("st_transportScale"), v.TransportScale);
   u->SetUniform3f(name("st_transportOffset"), v.TransportOffset);
   u->SetUniform3f(name("st_indexOrigin"), v.IndexOrigin);
+  // Arrays always hold the limits' worth of entries (unused ones zero): VTK declares a
+  // uniform array with the size it is given, so sizing them by the scene's counts
+  // would make a new shader text, and a new compiled program, per count
+  // (scatterer_illumination_dec.glsl).
   const scatterer_scene::LightSet& lights = *v.Lights;
   const int nl = lights.Count();
-  Set3(u, name("st_lightDir"), lights.Direction.data(), nl);
-  Set3(u, name("st_lightPos"), lights.Position.data(), nl);
-  Set3(u, name("st_lightColor"), lights.Color.data(), nl);
-  u->SetUniform1iv(name("st_lightPositional"), nl, lights.Positional.data());
+  constexpr int ml = scatterer_scene::kMaxLights;
+  auto padded = [](const auto& values, size_t size) {
+    std::vector<typename std::decay_t<decltype(values)>::value_type> out(size);
+    std::copy_n(values.begin(), std::min(size, values.size()), out.begin());
+    return out;
+  };
+  u->SetUniformi(name("st_lightCount"), nl);
+  Set3(u, name("st_lightDir"), padded(lights.Direction, 3 * ml).data(), ml);
+  Set3(u, name("st_lightPos"), padded(lights.Position, 3 * ml).data(), ml);
+  Set3(u, name("st_lightColor"), padded(lights.Color, 3 * ml).data(), ml);
+  u->SetUniform1iv(name("st_lightPositional"), ml, padded(lights.Positional, ml).data());
   u->SetUniform3f(name("st_ambient"), lights.Ambient);
   // Brightness of an unoccluded white sample, to normalize the visibility
   // that darkens VTK's own (Phong) shading.
@@ -159,11 +173,23 @@ void SetIlluminationUniforms(
   }
   u->SetUniformf(name("st_unlitNorm"), unlit > 0.0f ? 1.0f / unlit : 1.0f);
   const int nm = static_cast<int>(v.MaterialRanges.size() / 2);
-  u->SetUniform2fv(
-    name("st_matRange"), nm, reinterpret_cast<const float(*)[2]>(v.MaterialRanges.data()));
-  Set3(u, name("st_matColor"), v.MaterialColors.data(), nm);
-  u->SetUniform1fv(name("st_speedRatio"), nm * nm, v.SpeedRatios.data());
-  u->SetUniform1fv(name("st_opacityRatio"), nm * nm, v.OpacityRatios.data());
+  constexpr int mm = scatterer_scene::kMaxMaterials;
+  u->SetUniformi(name("st_materialCount"), nm);
+  u->SetUniform2fv(name("st_matRange"), mm,
+    reinterpret_cast<const float(*)[2]>(padded(v.MaterialRanges, 2 * mm).data()));
+  Set3(u, name("st_matColor"), padded(v.MaterialColors, 3 * mm).data(), mm);
+  // The n x n ratio tables go into mm x mm ones (row stride ST_MAX_MATERIALS).
+  std::vector<float> speed(mm * mm, 1.0f), opacity(mm * mm, 1.0f);
+  for (int a = 0; a < nm; ++a)
+  {
+    for (int b = 0; b < nm; ++b)
+    {
+      speed[a * mm + b] = v.SpeedRatios[a * nm + b];
+      opacity[a * mm + b] = v.OpacityRatios[a * nm + b];
+    }
+  }
+  u->SetUniform1fv(name("st_speedRatio"), mm * mm, speed.data());
+  u->SetUniform1fv(name("st_opacityRatio"), mm * mm, opacity.data());
   // Drop the rest (e.g. the other mode's samplers, which would stay declared as
   // plain ints). Removing only what is unused keeps the uniform list, and so the
   // shader, unchanged from frame to frame.

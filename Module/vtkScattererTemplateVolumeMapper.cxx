@@ -1,5 +1,6 @@
 #include "vtkScattererTemplateVolumeMapper.h"
 
+#include "ScattererProgramBudget.h"
 #include "ScattererSceneLights.h"
 #include "ScattererSceneMaterials.h"
 #include "ScattererShaderComposer.h"
@@ -19,6 +20,7 @@
 #include "vtkVolumeInputHelper.h"
 #include "vtkVolumeTexture.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLShaderProperty.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkRectilinearGrid.h"
@@ -30,6 +32,7 @@
 #include "vtkVolumeProperty.h"
 #include "vtkWeakPointer.h"
 
+#include <scatterer/Material.h>
 #include <scatterer/Pack.h>
 #include <scatterer/Template.h>
 #include <scatterer/Transport.h>
@@ -209,9 +212,13 @@ void vtkScattererTemplateVolumeMapper::AddScalarRangeMaterial(
       return;
     }
   }
-  if (hi < lo || refractiveIndex <= 0.0)
+  // The index range is the physics' own rule (scatterer::Material::validate), checked
+  // here so that a bad material is refused when added, not at render time.
+  if (hi < lo || refractiveIndex < scatterer::kMinRefractiveIndex ||
+    refractiveIndex > scatterer::kMaxRefractiveIndex)
   {
-    vtkErrorMacro("AddScalarRangeMaterial: needs lo <= hi and a refractive index > 0 (got ["
+    vtkErrorMacro("AddScalarRangeMaterial: needs lo <= hi and a refractive index in ["
+      << scatterer::kMinRefractiveIndex << ", " << scatterer::kMaxRefractiveIndex << "] (got ["
       << lo << ", " << hi << "], n = " << refractiveIndex << "); material ignored.");
     return;
   }
@@ -977,6 +984,9 @@ std::string vtkScattererTemplateVolumeMapper::RenderIlluminated(
     texture->Deactivate();
   }
   this->RemoveObserver(tag);
+  // The program that drew is the last one bound, unless VTK drew a resampling
+  // quad after it (then it is noted on a later frame).
+  scatterer_shader::NoteProgramUse(renWin, renWin->GetShaderCache()->GetLastShaderBound());
 
   bool compileFailed = false;
   for (const auto& e : errors)

@@ -317,7 +317,10 @@ public:
    */
   void SetMaterialDerivationRange(double lo, double hi);
   void ClearMaterialDerivationRange() { this->SetMaterialDerivationRange(1.0, 0.0); }
-  const double* GetMaterialDerivationRange() const { return this->MaterialDerivationRange; }
+  const double* GetMaterialDerivationRange() const VTK_SIZEHINT(2)
+  {
+    return this->MaterialDerivationRange;
+  }
   ///@}
 
   /** Time of the last change to an illumination parameter. */

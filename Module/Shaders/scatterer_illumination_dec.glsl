@@ -7,8 +7,16 @@
 // (TRANSPORT) reads the light transport volume (vtkScattererTransportVolume)
 // and needs nothing from this file.
 //============================================================================
-#define ST_LIGHTS @LIGHTS@
-#define ST_MATERIALS @MATERIALS@
+// Material arrays are sized by the mapper's limit and light arrays by a few
+// fixed slot counts (1, 2, 4, 6: the light count rounded up); loops run to the
+// scene's counts (st_lightCount, st_materialCount uniforms). Adding a light or a
+// material then changes uniforms only, or the text among four light variants,
+// so it compiles few new programs (VTK keeps every program it compiled for the
+// window's lifetime). One slot per light keeps the photon loop's per-light
+// values in registers: six slots for one light made the per-sample mode 2x
+// slower on llvmpipe.
+#define ST_LIGHT_SLOTS @LIGHT_SLOTS@
+#define ST_MAX_MATERIALS @MAX_MATERIALS@
 
 //ST::IF TRANSPORT
 // Light above this level is compressed smoothly toward 1 (scatterer_shading_impl.glsl).
@@ -21,8 +29,9 @@ const float st_knee = 0.7;
 // Material of a normalized scalar (the TF-table coordinate), -1 for none.
 int st_material(float s)
 {
-  for (int m = 0; m < ST_MATERIALS; ++m)
+  for (int m = 0; m < ST_MAX_MATERIALS; ++m)
   {
+    if (m >= st_materialCount) break;
     if (s >= st_matRange[m].x && s <= st_matRange[m].y)
     {
       return m;
@@ -85,8 +94,8 @@ float st_transmittance(float alpha, float dist)
 // toward it, lit = the part that arrives in the sample's own material (or in
 // empty space), tinted = the part that arrives through another material,
 // coloured by it.
-void st_gatherTemplate(int row, vec3 texPos, int m, float transmittance, vec3 toLight[ST_LIGHTS],
-  inout float lit[ST_LIGHTS], inout vec3 tinted[ST_LIGHTS], inout float den[ST_LIGHTS])
+void st_gatherTemplate(int row, vec3 texPos, int m, float transmittance, vec3 toLight[ST_LIGHT_SLOTS],
+  inout float lit[ST_LIGHT_SLOTS], inout vec3 tinted[ST_LIGHT_SLOTS], inout float den[ST_LIGHT_SLOTS])
 {
   for (int j = 0; j < st_photonCount; ++j)
   {
@@ -98,8 +107,9 @@ void st_gatherTemplate(int row, vec3 texPos, int m, float transmittance, vec3 to
       break;
     }
     bool towardAny = false;
-    for (int l = 0; l < ST_LIGHTS; ++l)
+    for (int l = 0; l < ST_LIGHT_SLOTS; ++l)
     {
+      if (l >= st_lightCount) break;
       towardAny = towardAny || dot(photon.xyz, toLight[l]) > 0.0;
     }
     if (!towardAny)
@@ -122,10 +132,10 @@ void st_gatherTemplate(int row, vec3 texPos, int m, float transmittance, vec3 to
       // Section 3.4: in another material light travels at n_m / n_mp of the
       // speed, so the photon sits that much nearer or farther; its intensity
       // scales with the opacity ratio (at most 1).
-      float speed = st_speedRatio[m * ST_MATERIALS + mp];
+      float speed = st_speedRatio[m * ST_MAX_MATERIALS + mp];
       offset *= speed;
       dist *= speed;
-      weight *= st_opacityRatio[m * ST_MATERIALS + mp];
+      weight *= st_opacityRatio[m * ST_MAX_MATERIALS + mp];
       probe = st_probe(texPos + offset);
       mp = st_material(probe.x);
     }
@@ -141,8 +151,9 @@ void st_gatherTemplate(int row, vec3 texPos, int m, float transmittance, vec3 to
     }
 //ST::ENDIF
 //ST::ENDIF
-    for (int l = 0; l < ST_LIGHTS; ++l)
+    for (int l = 0; l < ST_LIGHT_SLOTS; ++l)
     {
+      if (l >= st_lightCount) break;
       if (dot(photon.xyz, toLight[l]) > 0.0)
       {
         den[l] += photon.w;
@@ -177,16 +188,17 @@ void st_gatherTemplate(int row, vec3 texPos, int m, float transmittance, vec3 to
 // lowers F and B. transmittance is what is left of the ray at this sample.
 void st_illuminate(vec3 texPos, int m, float transmittance, out vec3 F, out vec3 B)
 {
-  vec3 toLight[ST_LIGHTS];
+  vec3 toLight[ST_LIGHT_SLOTS];
 //ST::IF POSITIONAL
   vec4 world = in_volumeMatrix[0] * in_textureDatasetMatrix[0] * vec4(texPos, 1.0);
   world /= world.w;
 //ST::ENDIF
-  float lit[ST_LIGHTS];
-  float den[ST_LIGHTS];
-  vec3 tinted[ST_LIGHTS];
-  for (int l = 0; l < ST_LIGHTS; ++l)
+  float lit[ST_LIGHT_SLOTS];
+  float den[ST_LIGHT_SLOTS];
+  vec3 tinted[ST_LIGHT_SLOTS];
+  for (int l = 0; l < ST_LIGHT_SLOTS; ++l)
   {
+    if (l >= st_lightCount) break;
     toLight[l] = st_lightDir[l];
 //ST::IF POSITIONAL
     if (st_lightPositional[l] != 0)
@@ -207,8 +219,9 @@ void st_illuminate(vec3 texPos, int m, float transmittance, out vec3 F, out vec3
 //ST::ENDIF
   F = st_ambient;
   B = vec3(0.0);
-  for (int l = 0; l < ST_LIGHTS; ++l)
+  for (int l = 0; l < ST_LIGHT_SLOTS; ++l)
   {
+    if (l >= st_lightCount) break;
     // No photon toward this light bright enough to matter: unoccluded.
     float inv = den[l] > 0.0 ? 1.0 / den[l] : 0.0;
     F += st_lightColor[l] * (den[l] > 0.0 ? lit[l] * inv : 1.0);

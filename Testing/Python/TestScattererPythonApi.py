@@ -84,6 +84,11 @@ for name in ("ShadowsEnabled", "ColorBleedingEnabled", "ThinPartCheckEnabled",
     check(getattr(m, "Get" + name)() is True, name + "On()")
     getattr(m, name + "Off")()
     check(getattr(m, "Get" + name)() is False, name + "Off()")
+# A pair of numbers, not an opaque pointer (the getter's size hint).
+check(tuple(m.GetMaterialDerivationRange()) == (1.0, 0.0), "unset derivation range")
+m.SetMaterialDerivationRange(2.0, 5.0)
+check(tuple(m.GetMaterialDerivationRange()) == (2.0, 5.0), "derivation range round-trip")
+m.ClearMaterialDerivationRange()
 m.SetIlluminationModeToTransport()
 check(m.GetIlluminationMode() == m.TRANSPORT, "SetIlluminationModeToTransport")
 m.SetIlluminationModeToPerSample()

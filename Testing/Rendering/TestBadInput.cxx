@@ -153,9 +153,31 @@ TEST(BadInput, AbsurdParametersAreClampedOrRejectedWithTheirName)
   EXPECT_TRUE(capture.Has("every argument must be finite")) << capture.Window->Text;
   stage.Mapper->AddScalarRangeMaterial(200, 100, 1.4, 1, 1, 1);
   EXPECT_TRUE(capture.Has("needs lo <= hi")) << capture.Window->Text;
-  stage.Mapper->AddScalarRangeMaterial(100, 200, -1.0, 1, 1, 1);
-  EXPECT_TRUE(capture.Has("refractive index > 0")) << capture.Window->Text;
+  // Indices the physics cannot use are refused when added, not at render time.
+  for (double n : { -1.0, 1e-300, 1e300 })
+  {
+    stage.Mapper->AddScalarRangeMaterial(100, 200, n, 1, 1, 1);
+    EXPECT_TRUE(capture.Has("a refractive index in [0.0001, 10000]")) << n << capture.Window->Text;
+    capture.Window->Text.clear();
+  }
   EXPECT_EQ(stage.Mapper->GetNumberOfRequestedMaterials(), 0);
+  // Radii at the ends of the setter's range render lit in both modes.
+  stage.Mapper->SetTemplateRadius(std::numeric_limits<double>::infinity());
+  EXPECT_TRUE(capture.Has("SetTemplateRadius: inf is outside")) << capture.Window->Text;
+  for (double radius : { std::numeric_limits<double>::max(), 1e-300 })
+  {
+    stage.Mapper->SetTemplateRadius(radius);
+    for (int mode : { vtkScattererTemplateVolumeMapper::TRANSPORT,
+           vtkScattererTemplateVolumeMapper::PER_SAMPLE })
+    {
+      stage.Mapper->SetIlluminationMode(mode);
+      stage.Render();
+      EXPECT_EQ(stage.Mapper->GetLastShaderFeatures().rfind("stock", 0), std::string::npos)
+        << radius << " " << stage.Mapper->GetLastShaderFeatures();
+    }
+  }
+  stage.Mapper->SetTemplateRadius(0.0);
+  stage.Mapper->SetIlluminationModeToTransport();
   stage.Mapper->SetMaterialDerivationRange(0.0, std::numeric_limits<double>::infinity());
   EXPECT_TRUE(capture.Has("the range must be finite")) << capture.Window->Text;
   EXPECT_GT(stage.Mapper->GetMaterialDerivationRange()[0], stage.Mapper->GetMaterialDerivationRange()[1])

@@ -57,9 +57,10 @@ TEST(ShaderComposer, NoMarkerOrPlaceholderReachesTheDriver)
     f.Transport = transport;
     const std::string glsl = All(f);
     EXPECT_FALSE(Has(glsl, "//ST::")) << transport;
-    EXPECT_FALSE(Has(glsl, "@LIGHTS@")) << transport;
-    EXPECT_TRUE(Has(glsl, "#define ST_LIGHTS 2")) << transport;
-    EXPECT_TRUE(Has(glsl, "#define ST_MATERIALS 2")) << transport;
+    EXPECT_FALSE(Has(glsl, "@")) << transport;
+    EXPECT_TRUE(Has(glsl, transport ? "#define ST_LIGHT_SLOTS 6" : "#define ST_LIGHT_SLOTS 2"))
+      << transport;
+    EXPECT_TRUE(Has(glsl, "#define ST_MAX_MATERIALS 8")) << transport;
   }
 }
 
@@ -117,4 +118,31 @@ TEST(ShaderComposer, DescribeNamesTheFeatures)
   Features f = PerSampleAllOn();
   EXPECT_EQ(f.Describe(),
     "per-sample lights=2 materials=2 shadow thin bleed boundary positional blend2");
+}
+
+// Every distinct text is a program VTK keeps for the window's lifetime, so the
+// number of materials (a uniform) must not change the text, and the number of
+// lights only through its slots (1, 2, 4, 6; docs/hard-cases.md, "Lifecycle soak").
+TEST(ShaderComposer, TextDependsOnLightSlotsOnly)
+{
+  for (bool transport : { false, true })
+  {
+    Features a = PerSampleAllOn();
+    a.Transport = transport;
+    Features b = a;
+    a.Lights = 3;
+    a.Materials = 2;
+    b.Lights = 4;
+    b.Materials = 8;
+    EXPECT_EQ(All(a), All(b)) << (transport ? "transport" : "per sample");
+    b.Lights = 1;
+    EXPECT_EQ(All(a) == All(b), transport) << "one light has its own per-sample text";
+  }
+  const int expected[] = { 1, 2, 4, 4, 6, 6 };
+  Features f = PerSampleAllOn();
+  for (int lights = 1; lights <= 6; ++lights)
+  {
+    f.Lights = lights;
+    EXPECT_EQ(scatterer_shader::LightSlots(f), expected[lights - 1]) << lights;
+  }
 }
