@@ -3,9 +3,11 @@
 // Default: the real CT head benchmark scene (shared/scenes/ct-head.json) at
 // 512x512. Run with --help for the options.
 #include "Common/ScattererCtHeadScene.h"
-#include "Common/ScattererScreenshot.h"
+#include "Common/ScattererFrameCheck.h"
 #include "Common/ScattererMapperSetup.h"
 #include "Common/ScattererRenderOptions.h"
+#include "Common/ScattererScreenshot.h"
+#include "Common/ScattererVolumeCheck.h"
 
 #include "vtkGPUVolumeRayCastMapper.h"
 #include "vtkImageData.h"
@@ -68,19 +70,27 @@ int main(int argc, char* argv[])
     std::cout << scatterer_examples::RenderUsage();
     return 0;
   }
-  if (!std::getenv("DISPLAY"))
-  {
-    std::cerr << "scatterer-render: no X display (DISPLAY is unset). VTK here renders through X;"
-                 " run under xvfb-run -a -s \"-screen 0 1280x1024x24\".\n";
-    return 1;
-  }
-
+  // The input first, then the display: a missing or unusable file is the user's
+  // problem to fix whatever machine this runs on, and reading needs no display.
   const bool ctHead = options.Input.empty();
   const std::string input = ctHead ? scatterer_examples::CtHeadPath() : options.Input;
   vtkSmartPointer<vtkImageData> image = scatterer_examples::ReadVolumeOrCtHead(options.Input, error);
   if (!image)
   {
     std::cerr << "scatterer-render: " << error << "\n";
+    return 1;
+  }
+  const bool autoScene = !ctHead && options.Scene != "ct-head";
+  const std::string refusal = scatterer_examples::CheckVolume(image, input, autoScene);
+  if (!refusal.empty())
+  {
+    std::cerr << "scatterer-render: " << refusal << "\n";
+    return 1;
+  }
+  if (!std::getenv("DISPLAY"))
+  {
+    std::cerr << "scatterer-render: no X display (DISPLAY is unset). VTK here renders through X;"
+                 " run under xvfb-run -a -s \"-screen 0 1280x1024x24\".\n";
     return 1;
   }
 
@@ -99,7 +109,7 @@ int main(int argc, char* argv[])
   volume->SetProperty(property);
   renderer->AddVolume(volume);
 
-  if (ctHead || options.Scene == "ct-head")
+  if (!autoScene)
   {
     scatterer_examples::ApplyCtHeadProperty(property);
     scatterer_examples::ApplyCtHeadCamera(renderer);
@@ -114,6 +124,35 @@ int main(int argc, char* argv[])
   }
   property->SetShade(options.Mode == "phong");
 
+  // A transfer function that leaves every value of the volume transparent draws the
+  // background only: say so instead of writing a black picture. (CheckVolume made
+  // sure the finite range exists.)
+  double range[2] = { 0.0, 0.0 };
+  scatterer_examples::FiniteScalarRange(image, range);
+  if (!scatterer_examples::OpacityVisibleOver(property, range))
+  {
+    std::cerr << "scatterer-render: refusing volume '" << input << "': the "
+              << (autoScene ? "automatic" : "ct-head scene's")
+              << " opacity transfer function is 0 over all of its values [" << range[0] << ", "
+              << range[1] << "], so nothing would show.\n";
+    return 1;
+  }
+
+  // Every VTK error from here to the last frame fails the run: a frame VTK could
+  // not draw as asked (a texture it could not make, a shader that did not build)
+  // is not the picture the options describe.
+  scatterer_examples::VtkErrorCounter vtkErrors;
+  const auto failedFrame = [&]() {
+    if (vtkErrors.Count() == 0)
+    {
+      return false;
+    }
+    std::cerr << "scatterer-render: VTK reported " << vtkErrors.Count()
+              << " error(s) while rendering '" << input << "' (the first: " << vtkErrors.First()
+              << "); the frame is not trusted and no image is written.\n";
+    return true;
+  };
+
   // One warm-up frame (shader compilation, texture upload, transport volume), then
   // the timed frames. The transport build is timed with the GPU work finished.
   if (auto* st = vtkScattererTemplateVolumeMapper::SafeDownCast(mapper))
@@ -122,6 +161,10 @@ int main(int argc, char* argv[])
   }
   window->Render();
   window->WaitForCompletion();
+  if (failedFrame())
+  {
+    return 1;
+  }
   double firstBuildMs = 0.0;
   if (auto* st = vtkScattererTemplateVolumeMapper::SafeDownCast(mapper))
   {
@@ -137,8 +180,33 @@ int main(int argc, char* argv[])
     frameMs.push_back(std::chrono::duration<double, std::milli>(stop - start).count());
   }
   const FrameStats stats = Summarize(frameMs);
+  if (failedFrame())
+  {
+    return 1;
+  }
 
-  if (!scatterer_examples::WriteWindowPng(window, options.Output))
+  // The volume has values the transfer function shows (checked above), so a frame
+  // of background only means it was not drawn: outside the camera's view (the
+  // ct-head scene's camera is fixed), or lost on the way.
+  vtkSmartPointer<vtkImageData> frame = scatterer_examples::GrabWindow(window);
+  if (scatterer_examples::IsBlank(frame, renderer))
+  {
+    // Where the volume is helps to see why (far out, or beside a fixed camera).
+    double origin[3], bounds[6];
+    image->GetOrigin(origin);
+    image->GetBounds(bounds);
+    std::cerr << "scatterer-render: the frame of '" << input
+              << "' came out blank (every pixel is the background) although the transfer "
+                 "function gives its values ["
+              << range[0] << ", " << range[1] << "] a visible opacity; the volume has origin ("
+              << origin[0] << ", " << origin[1] << ", " << origin[2] << ") and bounds x ["
+              << bounds[0] << ", " << bounds[1] << "], y [" << bounds[2] << ", " << bounds[3]
+              << "], z [" << bounds[4] << ", " << bounds[5] << "]"
+              << (autoScene ? "" : "; the ct-head scene's fixed camera may not see it")
+              << "; no image is written.\n";
+    return 1;
+  }
+  if (!scatterer_examples::WriteImagePng(frame, options.Output))
   {
     std::cerr << "scatterer-render: cannot write '" << options.Output << "'.\n";
     return 1;

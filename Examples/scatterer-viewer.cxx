@@ -16,10 +16,14 @@
 // Testing: --play-events FILE plays recorded interaction events (vtkInteractorEventRecorder,
 // e.g. made with --record FILE); "-" plays the built-in recording (drags + key presses).
 // With --output FILE.png the viewer writes the last frame and exits instead of staying
-// open; --test is --play-events - --size 300x300 --output scatterer-viewer-test.png and
-// also checks that the PNG is not blank and that illumination was on in every frame.
+// open; --test is --play-events - --size 300x300 --output scatterer-viewer-test.png for
+// whichever of those was not given, and also checks that the PNG is not blank and that
+// illumination was on in every frame.
 #include "Common/ScattererCtHeadScene.h"
+#include "Common/ScattererFrameCheck.h"
+#include "Common/ScattererRenderOptions.h"
 #include "Common/ScattererScreenshot.h"
+#include "Common/ScattererVolumeCheck.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
@@ -130,6 +134,7 @@ struct Options
   std::string Record;
   int Width = 600;
   int Height = 600;
+  bool SizeGiven = false;
   bool Test = false;
 };
 
@@ -142,8 +147,10 @@ std::string Usage()
          "  --play-events FILE   play recorded interaction events ('-': the built-in recording)\n"
          "  --record FILE        record the session's interaction events to FILE\n"
          "  --output FILE.png    after playing the events, write the last frame and exit\n"
-         "  --test               --play-events - --size 300x300 --output scatterer-viewer-test.png,\n"
-         "                       and fail unless the image is lit and not blank\n"
+         "  --test               play the built-in recording and write scatterer-viewer-test.png\n"
+         "                       at 300x300 (--play-events, --output and --size, when given,\n"
+         "                       win), and fail unless the image is lit and illumination was on\n"
+         "                       in every frame\n"
          "  --help\n"
          "Keys in the window:\n" +
     std::string(KeyHelp) + "\n";
@@ -183,22 +190,17 @@ bool ParseArgs(int argc, char* argv[], Options& o, bool& help, std::string& erro
     }
     else if (a == "--size")
     {
-      std::string v;
+      std::string v, why;
       if (!value(v))
       {
         return false;
       }
-      int w = 0, h = 0;
-      char x = 0, extra = 0;
-      std::istringstream in(v);
-      if (!(in >> w >> x >> h) || (x != 'x' && x != 'X') || (in >> extra) || w < 16 || h < 16 ||
-        w > 8192 || h > 8192)
+      if (!scatterer_examples::ParseSize(v, o.Width, o.Height, why))
       {
-        error = "--size wants WxH (16..8192), not '" + v + "'";
+        error = "--size '" + v + "': " + why;
         return false;
       }
-      o.Width = w;
-      o.Height = h;
+      o.SizeGiven = true;
     }
     else
     {
@@ -208,6 +210,8 @@ bool ParseArgs(int argc, char* argv[], Options& o, bool& help, std::string& erro
   }
   if (o.Test)
   {
+    // --test fills in what was not given; an explicit --size, --output or
+    // --play-events wins (a --size used to be cut to 300x300 without a word).
     if (o.PlayEvents.empty())
     {
       o.PlayEvents = "-";
@@ -216,8 +220,11 @@ bool ParseArgs(int argc, char* argv[], Options& o, bool& help, std::string& erro
     {
       o.Output = "scatterer-viewer-test.png";
     }
-    o.Width = std::min(o.Width, 300);
-    o.Height = std::min(o.Height, 300);
+    if (!o.SizeGiven)
+    {
+      o.Width = 300;
+      o.Height = 300;
+    }
   }
   return true;
 }
@@ -489,12 +496,8 @@ int main(int argc, char* argv[])
     std::cout << Usage();
     return 0;
   }
-  if (!std::getenv("DISPLAY"))
-  {
-    std::cerr << "scatterer-viewer: no X display (DISPLAY is unset); it needs a window"
-                 " (for tests: xvfb-run -a -s \"-screen 0 1280x1024x24\").\n";
-    return 1;
-  }
+  // The input files first, then the display: a missing or unusable file is the
+  // user's to fix on any machine, and reading needs no display.
   std::string events;
   if (!options.PlayEvents.empty() && !ReadEvents(options.PlayEvents, events, error))
   {
@@ -513,6 +516,23 @@ int main(int argc, char* argv[])
     }
     return 1;
   }
+  const std::string refusal = scatterer_examples::CheckVolume(
+    image, ctHead ? scatterer_examples::CtHeadPath() : options.Input, !ctHead);
+  if (!refusal.empty())
+  {
+    std::cerr << "scatterer-viewer: " << refusal << "\n";
+    return 1;
+  }
+  if (!std::getenv("DISPLAY"))
+  {
+    std::cerr << "scatterer-viewer: no X display (DISPLAY is unset); it needs a window"
+                 " (for tests: xvfb-run -a -s \"-screen 0 1280x1024x24\").\n";
+    return 1;
+  }
+  // With --output, a VTK error in any frame fails the run (as in scatterer-render):
+  // the written frame would not be what was asked for. In the interactive window
+  // the messages are in the terminal for the user to see.
+  scatterer_examples::VtkErrorCounter vtkErrors;
 
   vtkNew<vtkRenderWindow> window;
   vtkNew<vtkRenderer> renderer;
@@ -634,6 +654,13 @@ int main(int argc, char* argv[])
     return 0;
   }
 
+  if (vtkErrors.Count() > 0)
+  {
+    std::cerr << "scatterer-viewer: VTK reported " << vtkErrors.Count()
+              << " error(s) while rendering (the first: " << vtkErrors.First()
+              << "); the frame is not trusted and no image is written.\n";
+    return 1;
+  }
   if (!scatterer_examples::WriteWindowPng(window, options.Output))
   {
     std::cerr << "scatterer-viewer: cannot write '" << options.Output << "'.\n";

@@ -1,4 +1,5 @@
 #include "ScattererCtHeadScene.h"
+#include "ScattererVolumeCheck.h"
 
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
@@ -121,8 +122,12 @@ void ApplyCtHeadWindowSettings(vtkRenderWindow* window)
 
 void ApplyAutoScene(vtkImageData* image, vtkVolumeProperty* property, vtkRenderer* renderer)
 {
-  double range[2];
-  image->GetScalarRange(range);
+  // The finite range: one infinite voxel must not stretch the ramp to infinity
+  // (vtkDataSet::GetScalarRange includes infinities), which leaves every finite
+  // voxel transparent. Volumes with no finite value, or a constant one, are refused
+  // before this (CheckVolume); the fallbacks keep this function total for other callers.
+  double range[2] = { 0.0, 1.0 };
+  FiniteScalarRange(image, range);
   if (!(range[1] > range[0]))
   {
     range[1] = range[0] + 1.0;

@@ -45,7 +45,7 @@ void ApplyCtHeadMapperSettings(vtkGPUVolumeRayCastMapper* mapper);
 void ApplyCtHeadWindowSettings(vtkRenderWindow* window);
 
 /**
- * For volumes other than the CT head: a grey ramp over the scalar range with
+ * For volumes other than the CT head: a grey ramp over the finite scalar range with
  * opacity rising through the upper half, the camera reset to fit, a headlight.
  */
 void ApplyAutoScene(vtkImageData* image, vtkVolumeProperty* property, vtkRenderer* renderer);

@@ -1,6 +1,10 @@
 #include "ScattererRenderOptions.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
+#include <cfloat>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
@@ -8,34 +12,127 @@ namespace scatterer_examples
 {
 namespace
 {
-bool ParseInt(const std::string& text, int lo, int hi, int& value)
+std::string Number(double v)
+{
+  char text[32];
+  std::snprintf(text, sizeof(text), "%g", v);
+  return text;
+}
+
+/**
+ * Why @p text is not a plain decimal number (an integer when @p integer), or "" if
+ * it is one. strtod and strtol alone would take " 5" (leading space), "0x10"
+ * (hexadecimal; strtod even reads hexadecimal fractions), "inf" and "nan", and a
+ * user who typed them most likely meant something else.
+ */
+std::string DecimalSyntaxProblem(const std::string& text, bool integer)
 {
   if (text.empty())
   {
+    return "empty; a number is needed";
+  }
+  if (std::isspace(static_cast<unsigned char>(text.front())) ||
+    std::isspace(static_cast<unsigned char>(text.back())))
+  {
+    return "has spaces around it; write the number alone";
+  }
+  size_t i = text[0] == '+' || text[0] == '-' ? 1 : 0;
+  std::string rest = text.substr(i);
+  std::transform(rest.begin(), rest.end(), rest.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (rest.rfind("inf", 0) == 0 || rest.rfind("nan", 0) == 0)
+  {
+    return "not a finite number (inf and nan are refused)";
+  }
+  if (rest.rfind("0x", 0) == 0)
+  {
+    return "hexadecimal is not accepted; write the number in decimal";
+  }
+  // [+-] digits [. digits] [e [+-] digits], or [+-] . digits [e ...].
+  const auto digits = [&]() {
+    const size_t from = i;
+    while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i])))
+    {
+      ++i;
+    }
+    return i - from;
+  };
+  size_t mantissa = digits();
+  bool fraction = false;
+  if (i < text.size() && text[i] == '.')
+  {
+    ++i;
+    fraction = true;
+    mantissa += digits();
+  }
+  bool exponent = false;
+  if (mantissa > 0 && i < text.size() && (text[i] == 'e' || text[i] == 'E'))
+  {
+    ++i;
+    if (i < text.size() && (text[i] == '+' || text[i] == '-'))
+    {
+      ++i;
+    }
+    exponent = true;
+    if (digits() == 0)
+    {
+      mantissa = 0; // "1e" or "1e+": no exponent digits
+    }
+  }
+  if (mantissa == 0 || i != text.size())
+  {
+    return integer ? "not a decimal integer" : "not a decimal number";
+  }
+  if (integer && (fraction || exponent))
+  {
+    return "not an integer";
+  }
+  return std::string();
+}
+
+bool ParseInt(const std::string& text, int lo, int hi, int& value, std::string& why)
+{
+  why = DecimalSyntaxProblem(text, true);
+  if (!why.empty())
+  {
     return false;
   }
-  char* end = nullptr;
   errno = 0;
-  const long v = std::strtol(text.c_str(), &end, 10);
-  if (errno != 0 || *end != '\0' || v < lo || v > hi)
+  const long long v = std::strtoll(text.c_str(), nullptr, 10);
+  if (errno == ERANGE || v < lo || v > hi)
   {
+    why = "out of range; must be an integer in " + std::to_string(lo) + ".." + std::to_string(hi);
     return false;
   }
   value = static_cast<int>(v);
   return true;
 }
 
-bool ParseDouble(const std::string& text, double lo, double hi, double& value)
+bool ParseDouble(const std::string& text, double lo, double hi, double& value, std::string& why)
 {
-  if (text.empty())
+  why = DecimalSyntaxProblem(text, false);
+  if (!why.empty())
   {
     return false;
   }
-  char* end = nullptr;
   errno = 0;
-  const double v = std::strtod(text.c_str(), &end);
-  if (errno != 0 || *end != '\0' || !(v >= lo && v <= hi))
+  const double v = std::strtod(text.c_str(), nullptr);
+  if (errno == ERANGE && std::fabs(v) > 1.0)
   {
+    why = "too large to represent (beyond " + Number(DBL_MAX) + ", the largest double)";
+    return false;
+  }
+  // Underflow: strtod returns a denormal or 0 with ERANGE. Refused rather than
+  // rounded: the value the user wrote is not the value the program would use.
+  if ((errno == ERANGE && std::fabs(v) < 1.0) || (v != 0.0 && std::fabs(v) < DBL_MIN))
+  {
+    why = "too small to represent: its magnitude is below " + Number(DBL_MIN) +
+      ", the smallest normal double (it would be kept as a denormal or as 0); write 0 for zero";
+    return false;
+  }
+  if (!(v >= lo && v <= hi))
+  {
+    why = "out of range; must be a number in [" + Number(lo) + ", " + Number(hi) + "]";
     return false;
   }
   value = v;
@@ -56,13 +153,28 @@ bool ParseOnOff(const std::string& text, bool& value)
   }
   return false;
 }
+}
 
-bool ParseSize(const std::string& text, int& w, int& h)
+bool ParseSize(const std::string& text, int& width, int& height, std::string& why)
 {
   const auto x = text.find_first_of("xX");
-  return x != std::string::npos && ParseInt(text.substr(0, x), 16, 8192, w) &&
-    ParseInt(text.substr(x + 1), 16, 8192, h);
-}
+  if (x == std::string::npos)
+  {
+    why = "not WxH (two integers joined by x, e.g. 512x512)";
+    return false;
+  }
+  std::string problem;
+  if (!ParseInt(text.substr(0, x), 16, 8192, width, problem))
+  {
+    why = "width " + problem;
+    return false;
+  }
+  if (!ParseInt(text.substr(x + 1), 16, 8192, height, problem))
+  {
+    why = "height " + problem;
+    return false;
+  }
+  return true;
 }
 
 std::string RenderUsage()
@@ -109,7 +221,20 @@ std::string RenderUsage()
          "  --strength S      occlusion strength, 0..100 (default 1)\n"
          "  --long-range M    per-sample: thin-part check distance in photon offsets, 1..64\n"
          "                    (default 3)\n"
-         "  --help            this text\n";
+         "  --help            this text\n"
+         "Numbers are plain decimal (5, 0.25, 1e-3, a leading + or -). Refused with a message:\n"
+         "hexadecimal (0x10), spaces around the number, trailing characters, inf, nan,\n"
+         "fractions or exponents where an integer is asked for, and values too small for a\n"
+         "normal double (magnitude below 2.2e-308, e.g. 1e-320; write 0 for zero).\n"
+         "Volumes that cannot give a picture are refused before rendering, with a message\n"
+         "naming the file and the reason: no finite value, fewer than 2 points along an axis,\n"
+         "a spacing that is not a finite number > 0 (or beyond what single precision\n"
+         "resolves), an origin that is not finite (or too far out), a constant volume\n"
+         "(--scene auto), and a volume whose values the transfer function leaves transparent.\n"
+         "Exit status: 0 the image was written; 1 the volume cannot be read or is refused, VTK\n"
+         "reported an error while rendering, the frame came out blank (background only) although\n"
+         "the volume has visible values, or the PNG cannot be written (no image is written on\n"
+         "failure); 2 a bad argument.\n";
 }
 
 bool ParseRenderOptions(int argc, char* argv[], RenderOptions& o, std::string& error)
@@ -126,7 +251,7 @@ bool ParseRenderOptions(int argc, char* argv[], RenderOptions& o, std::string& e
       out = argv[++i];
       return true;
     };
-    std::string v;
+    std::string v, why;
     if (arg == "--help" || arg == "-h")
     {
       o.Help = true;
@@ -154,9 +279,9 @@ bool ParseRenderOptions(int argc, char* argv[], RenderOptions& o, std::string& e
     {
       if (!value(v))
         return false;
-      if (!ParseSize(v, o.Width, o.Height))
+      if (!ParseSize(v, o.Width, o.Height, why))
       {
-        error = "--size must be WxH with W and H in 16..8192, got '" + v + "'";
+        error = "--size '" + v + "': " + why;
         return false;
       }
     }
@@ -164,9 +289,9 @@ bool ParseRenderOptions(int argc, char* argv[], RenderOptions& o, std::string& e
     {
       if (!value(v))
         return false;
-      if (!ParseInt(v, 1, 10000, o.Frames))
+      if (!ParseInt(v, 1, 10000, o.Frames, why))
       {
-        error = "--frames must be an integer in 1..10000, got '" + v + "'";
+        error = "--frames '" + v + "': " + why;
         return false;
       }
     }
@@ -237,9 +362,9 @@ bool ParseRenderOptions(int argc, char* argv[], RenderOptions& o, std::string& e
         : arg == "--templates"         ? o.Templates
         : arg == "--transport-scale"       ? o.TransportScale
                                        : o.Interval;
-      if (!ParseInt(v, 1, hi, target))
+      if (!ParseInt(v, 1, hi, target, why))
       {
-        error = arg + " must be an integer in 1.." + std::to_string(hi) + ", got '" + v + "'";
+        error = arg + " '" + v + "': " + why;
         return false;
       }
     }
@@ -258,10 +383,9 @@ bool ParseRenderOptions(int argc, char* argv[], RenderOptions& o, std::string& e
         : arg == "--strength"            ? o.Strength
         : arg == "--multiple-scattering" ? o.MultipleScattering
                                          : o.LongRange;
-      if (!ParseDouble(v, lo, hi, target))
+      if (!ParseDouble(v, lo, hi, target, why))
       {
-        error = arg + " must be a number in [" + std::to_string(lo) + ", " + std::to_string(hi) +
-          "], got '" + v + "'";
+        error = arg + " '" + v + "': " + why;
         return false;
       }
     }

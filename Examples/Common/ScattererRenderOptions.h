@@ -30,6 +30,12 @@ struct RenderOptions
 /** Parses argv into @p options; false with @p error set on a bad argument. */
 bool ParseRenderOptions(int argc, char* argv[], RenderOptions& options, std::string& error);
 
+/**
+ * Parses a window size "WxH", each 16..8192 (plain decimal integers, as every number
+ * option); false with @p why saying what is wrong. scatterer-viewer uses it too.
+ */
+bool ParseSize(const std::string& text, int& width, int& height, std::string& why);
+
 /** The --help text. */
 std::string RenderUsage();
 
