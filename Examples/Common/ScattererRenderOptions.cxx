@@ -10,14 +10,15 @@
 
 namespace scatterer_examples
 {
-namespace
-{
-std::string Number(double v)
+std::string FormatNumber(double v)
 {
   char text[32];
   std::snprintf(text, sizeof(text), "%g", v);
   return text;
 }
+
+namespace
+{
 
 /**
  * Why @p text is not a plain decimal number (an integer when @p integer), or "" if
@@ -119,20 +120,20 @@ bool ParseDouble(const std::string& text, double lo, double hi, double& value, s
   const double v = std::strtod(text.c_str(), nullptr);
   if (errno == ERANGE && std::fabs(v) > 1.0)
   {
-    why = "too large to represent (beyond " + Number(DBL_MAX) + ", the largest double)";
+    why = "too large to represent (beyond " + FormatNumber(DBL_MAX) + ", the largest double)";
     return false;
   }
   // Underflow: strtod returns a denormal or 0 with ERANGE. Refused rather than
   // rounded: the value the user wrote is not the value the program would use.
   if ((errno == ERANGE && std::fabs(v) < 1.0) || (v != 0.0 && std::fabs(v) < DBL_MIN))
   {
-    why = "too small to represent: its magnitude is below " + Number(DBL_MIN) +
+    why = "too small to represent: its magnitude is below " + FormatNumber(DBL_MIN) +
       ", the smallest normal double (it would be kept as a denormal or as 0); write 0 for zero";
     return false;
   }
   if (!(v >= lo && v <= hi))
   {
-    why = "out of range; must be a number in [" + Number(lo) + ", " + Number(hi) + "]";
+    why = "out of range; must be a number in [" + FormatNumber(lo) + ", " + FormatNumber(hi) + "]";
     return false;
   }
   value = v;

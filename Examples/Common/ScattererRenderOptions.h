@@ -39,6 +39,9 @@ bool ParseSize(const std::string& text, int& width, int& height, std::string& wh
 /** The --help text. */
 std::string RenderUsage();
 
+/** A number as messages show it (printf %g). */
+std::string FormatNumber(double value);
+
 /** Escapes a string for a JSON string literal. */
 std::string JsonEscape(const std::string& text);
 }

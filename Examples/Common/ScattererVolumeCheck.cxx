@@ -1,26 +1,20 @@
 #include "ScattererVolumeCheck.h"
 
+#include "ScattererRenderOptions.h"
+
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkPointData.h"
 
 #include <cmath>
-#include <cstdio>
 
 namespace scatterer_examples
 {
 namespace
 {
-std::string Number(double v)
-{
-  char text[32];
-  std::snprintf(text, sizeof(text), "%g", v);
-  return text;
-}
-
 std::string Triple(const double v[3])
 {
-  return "(" + Number(v[0]) + ", " + Number(v[1]) + ", " + Number(v[2]) + ")";
+  return "(" + FormatNumber(v[0]) + ", " + FormatNumber(v[1]) + ", " + FormatNumber(v[2]) + ")";
 }
 }
 
@@ -105,7 +99,7 @@ std::string CheckVolume(vtkImageData* image, const std::string& path, bool autoS
   }
   if (autoScene && range[0] == range[1])
   {
-    return refused + "every finite voxel value is " + Number(range[0]) +
+    return refused + "every finite voxel value is " + FormatNumber(range[0]) +
       "; the automatic transfer function ramps opacity over the range of values, and a "
       "constant volume has none, so nothing would show.";
   }
