@@ -9,9 +9,9 @@
 #include "vtkVolume.h"
 
 #include <algorithm>
+#include <cstring>
 #include <type_traits>
 #include <vector>
-#include <cstring>
 
 namespace scatterer_shader
 {

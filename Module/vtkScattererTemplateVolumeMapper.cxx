@@ -984,8 +984,9 @@ std::string vtkScattererTemplateVolumeMapper::RenderIlluminated(
     texture->Deactivate();
   }
   this->RemoveObserver(tag);
-  // The program that drew is the last one bound, unless VTK drew a resampling
-  // quad after it (then it is noted on a later frame).
+  // The program that drew is the last one bound, unless VTK drew its resampling quad
+  // after it (ImageSampleDistance > 1): that frame's program is then not counted,
+  // and is counted on the next full-resolution frame that uses it.
   scatterer_shader::NoteProgramUse(renWin, renWin->GetShaderCache()->GetLastShaderBound());
 
   bool compileFailed = false;
