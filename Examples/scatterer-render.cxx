@@ -70,6 +70,11 @@ int main(int argc, char* argv[])
     std::cout << scatterer_examples::RenderUsage();
     return 0;
   }
+  if (options.Version)
+  {
+    std::cout << scatterer_examples::VersionText("scatterer-render");
+    return 0;
+  }
   // The input first, then the display: a missing or unusable file is the user's
   // problem to fix whatever machine this runs on, and reading needs no display.
   const bool ctHead = options.Input.empty();

@@ -136,6 +136,7 @@ struct Options
   int Height = 600;
   bool SizeGiven = false;
   bool Test = false;
+  bool Version = false;
 };
 
 std::string Usage()
@@ -152,6 +153,7 @@ std::string Usage()
          "                       win), and fail unless the image is lit and illumination was on\n"
          "                       in every frame\n"
          "  --help\n"
+         "  --version            the ScattererTemplate and VTK versions\n"
          "Keys in the window:\n" +
     std::string(KeyHelp) + "\n";
 }
@@ -173,6 +175,10 @@ bool ParseArgs(int argc, char* argv[], Options& o, bool& help, std::string& erro
     if (a == "--help" || a == "-h")
     {
       help = true;
+    }
+    else if (a == "--version")
+    {
+      o.Version = true;
     }
     else if (a == "--test")
     {
@@ -494,6 +500,11 @@ int main(int argc, char* argv[])
   if (help)
   {
     std::cout << Usage();
+    return 0;
+  }
+  if (options.Version)
+  {
+    std::cout << scatterer_examples::VersionText("scatterer-viewer");
     return 0;
   }
   // The input files first, then the display: a missing or unusable file is the

@@ -1,5 +1,8 @@
 #include "ScattererRenderOptions.h"
 
+#include "vtkScattererTemplateVersion.h"
+#include "vtkVersion.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -10,6 +13,12 @@
 
 namespace scatterer_examples
 {
+std::string VersionText(const std::string& program)
+{
+  return program + " " + vtkScattererTemplateVersion::GetVersion() + " (VTK " +
+    vtkVersion::GetVTKVersion() + ")\n";
+}
+
 std::string FormatNumber(double v)
 {
   char text[32];
@@ -223,6 +232,7 @@ std::string RenderUsage()
          "  --long-range M    per-sample: thin-part check distance in photon offsets, 1..64\n"
          "                    (default 3)\n"
          "  --help            this text\n"
+         "  --version         the ScattererTemplate and VTK versions\n"
          "Numbers are plain decimal (5, 0.25, 1e-3, a leading + or -). Refused with a message:\n"
          "hexadecimal (0x10), spaces around the number, trailing characters, inf, nan,\n"
          "fractions or exponents where an integer is asked for, and values too small for a\n"
@@ -256,6 +266,10 @@ bool ParseRenderOptions(int argc, char* argv[], RenderOptions& o, std::string& e
     if (arg == "--help" || arg == "-h")
     {
       o.Help = true;
+    }
+    else if (arg == "--version")
+    {
+      o.Version = true;
     }
     else if (arg == "--json")
     {

@@ -18,6 +18,7 @@ struct RenderOptions
   int Frames = 1;
   bool Json = false;
   bool Help = false;
+  bool Version = false;
 
   // Template illumination (--mode template); negative = the mapper's default.
   bool Shadows = true, Bleeding = true, Thin = true, Boundary = true, Blend = false;
@@ -38,6 +39,9 @@ bool ParseSize(const std::string& text, int& width, int& height, std::string& wh
 
 /** The --help text. */
 std::string RenderUsage();
+
+/** What --version prints: "<program> <ScattererTemplate version> (VTK <version>)". */
+std::string VersionText(const std::string& program);
 
 /** A number as messages show it (printf %g). */
 std::string FormatNumber(double value);

@@ -10,6 +10,7 @@
 #include "ScattererReferenceScene.h"
 
 #include "Common/ScattererCtHeadScene.h"
+#include "Common/ScattererRenderOptions.h"
 #include "scatterer_reference/PathTracer.h"
 
 #include "vtkImageData.h"
@@ -28,7 +29,7 @@ namespace
 const char* kUsage =
   "usage: scatterer-reference [--scene ct-head|shell-plate] [--input VOLUME] [--size WxH]\n"
   "         [--spp N] [--max-order N] [--seed S] [--threads N] [--output PREFIX]\n"
-  "         [--exposure E|auto] [--quiet]\n"
+  "         [--exposure E|auto] [--quiet] [--version]\n"
   "Monte Carlo volumetric path tracing (delta tracking, NEE with ratio tracking) of the scene;\n"
   "writes PREFIX.vti (float RGB radiance + standard error) and PREFIX.png.\n"
   "Defaults: ct-head, 256x256, 256 spp, max order 64, seed 1, all cores, output reference,\n"
@@ -50,6 +51,11 @@ int main(int argc, char* argv[])
     if (a == "--help" || a == "-h")
     {
       std::cout << kUsage;
+      return 0;
+    }
+    else if (a == "--version")
+    {
+      std::cout << scatterer_examples::VersionText("scatterer-reference");
       return 0;
     }
     else if (a == "--quiet")

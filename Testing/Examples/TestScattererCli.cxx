@@ -670,3 +670,18 @@ TEST(VolumeCheck, OpacityVisibleOverLooksInsideTheRangeOnly)
   EXPECT_TRUE(scatterer_examples::OpacityVisibleOver(property, aroundSpike));
   EXPECT_FALSE(scatterer_examples::OpacityVisibleOver(property, besideSpike));
 }
+
+// One version number (CMake/ScattererTemplateVersion.cmake) reaches every program.
+TEST(Version, EveryProgramPrintsTheOneVersion)
+{
+  const std::pair<const char*, const char*> programs[] = { { "scatterer-render",
+                                                            SCATTERER_RENDER_EXE },
+    { "scatterer-viewer", SCATTERER_VIEWER_EXE } };
+  for (const auto& p : programs)
+  {
+    const Result r = RunProgram(p.second, { "--version" });
+    EXPECT_EQ(r.Status, 0) << p.first;
+    EXPECT_EQ(r.Output.rfind(std::string(p.first) + " " + SCATTERER_EXPECTED_VERSION + " (VTK ", 0), 0u)
+      << r.Output;
+  }
+}

@@ -1,6 +1,8 @@
 """The wrapped API from Python: import, setter round-trips (including the custom
 clamp/switch macros of the mapper), clamping warnings, NaN errors and array arguments."""
 import math
+import os
+import re
 import sys
 
 from vtkmodules.util.misc import calldata_type
@@ -10,6 +12,7 @@ import scatterertemplate
 from scatterertemplate import (
     vtkScattererMaterial,
     vtkScattererTemplateSource,
+    vtkScattererTemplateVersion,
     vtkScattererTemplateVolumeMapper,
     vtkScattererVolumeReader,
 )
@@ -48,6 +51,16 @@ class Messages:
 for name in scatterertemplate.__all__:
     check(hasattr(scatterertemplate, name), "scatterertemplate." + name + " missing")
 m = vtkScattererTemplateVolumeMapper()
+# One version number: what CMake configured, the C++ getter and __version__ agree.
+expected_version = os.environ.get("SCATTERER_EXPECTED_VERSION", "")
+check(bool(re.fullmatch(r"\d+\.\d+\.\d+", expected_version)), "the test knows the version")
+check(scatterertemplate.__version__ == expected_version,
+      "__version__ %r is the configured %r" % (scatterertemplate.__version__, expected_version))
+check(vtkScattererTemplateVersion.GetVersion() == expected_version, "GetVersion()")
+check("%d.%d.%d" % (vtkScattererTemplateVersion.GetMajorVersion(),
+                    vtkScattererTemplateVersion.GetMinorVersion(),
+                    vtkScattererTemplateVersion.GetPatchVersion()) == expected_version,
+      "major.minor.patch")
 check(m.GetClassName() == "vtkScattererTemplateVolumeMapper", "class name")
 check(m.IsA("vtkOpenGLGPUVolumeRayCastMapper"), "the mapper is a vtkOpenGLGPUVolumeRayCastMapper")
 

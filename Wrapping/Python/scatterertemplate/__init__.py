@@ -4,7 +4,8 @@
     mapper = vtkScattererTemplateVolumeMapper()   # instead of vtkOpenGLGPUVolumeRayCastMapper
 
 Classes: vtkScattererTemplateVolumeMapper, vtkScattererTemplateSource,
-vtkScattererMaterial, vtkScattererVolumeReader. Rendering needs VTK's OpenGL
+vtkScattererMaterial, vtkScattererVolumeReader, vtkScattererTemplateVersion
+(``__version__``). Rendering needs VTK's OpenGL
 factories, so import ``vtkmodules.vtkRenderingOpenGL2`` and
 ``vtkmodules.vtkRenderingVolumeOpenGL2`` (done here) before making a render window.
 """
@@ -16,13 +17,18 @@ import vtkmodules.vtkRenderingVolumeOpenGL2  # noqa: F401
 from .ScattererTemplate import (  # noqa: F401
     vtkScattererMaterial,
     vtkScattererTemplateSource,
+    vtkScattererTemplateVersion,
     vtkScattererTemplateVolumeMapper,
     vtkScattererVolumeReader,
 )
 
+# The library's own version (one number: CMake/ScattererTemplateVersion.cmake).
+__version__ = vtkScattererTemplateVersion.GetVersion()
+
 __all__ = [
     "vtkScattererMaterial",
     "vtkScattererTemplateSource",
+    "vtkScattererTemplateVersion",
     "vtkScattererTemplateVolumeMapper",
     "vtkScattererVolumeReader",
 ]
