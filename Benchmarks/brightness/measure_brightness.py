@@ -15,7 +15,6 @@ import os
 
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkRenderingCore import (
-    vtkLight,
     vtkRenderer,
     vtkRenderWindow,
     vtkVolume,
@@ -43,22 +42,7 @@ def main():
     window.SetMultiSamples(0)
     renderer = vtkRenderer()
     window.AddRenderer(renderer)
-    renderer.AutomaticLightCreationOff()
-    renderer.TwoSidedLightingOn()
-    light = vtkLight()
-    light.SetLightTypeToSceneLight()
-    light.PositionalOff()
-    light.SetPosition(222.0, 435.0, 319.0)
-    light.SetFocalPoint(122.0, 135.0, 75.0)
-    for set_colour in (light.SetAmbientColor, light.SetDiffuseColor, light.SetSpecularColor):
-        set_colour(1.0, 1.0, 1.0)
-    renderer.AddLight(light)
-    camera = renderer.GetActiveCamera()
-    camera.SetPosition(-96.0, 572.0, 252.0)
-    camera.SetFocalPoint(122.0, 135.0, 75.0)
-    camera.SetViewUp(0.0, 0.0, 1.0)
-    camera.SetViewAngle(30.0)
-    camera.SetClippingRange(200.0, 1200.0)
+    light = scene.apply_ct_head_view(renderer)
     volume = vtkVolume()
     renderer.AddVolume(volume)
 

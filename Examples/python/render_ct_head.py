@@ -62,6 +62,32 @@ def ct_head_property():
     return prop
 
 
+def apply_ct_head_view(renderer):
+    """The scene's camera and its one directional scene light (white ambient, diffuse and
+    specular colours, as ScattererCtHeadScene.cxx); returns the light."""
+    camera = renderer.GetActiveCamera()
+    camera.SetPosition(-96.0, 572.0, 252.0)
+    camera.SetFocalPoint(122.0, 135.0, 75.0)
+    camera.SetViewUp(0.0, 0.0, 1.0)
+    camera.SetViewAngle(30.0)
+    camera.SetClippingRange(200.0, 1200.0)
+    # Template illumination follows scene lights.
+    renderer.AutomaticLightCreationOff()
+    renderer.RemoveAllLights()
+    light = vtkLight()
+    light.SetLightTypeToSceneLight()
+    light.PositionalOff()
+    light.SetPosition(222.0, 435.0, 319.0)
+    light.SetFocalPoint(122.0, 135.0, 75.0)
+    light.SetIntensity(1.0)
+    light.SetAmbientColor(1.0, 1.0, 1.0)
+    light.SetDiffuseColor(1.0, 1.0, 1.0)
+    light.SetSpecularColor(1.0, 1.0, 1.0)
+    renderer.AddLight(light)
+    renderer.TwoSidedLightingOn()
+    return light
+
+
 def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--input", default=os.path.join(data_directory(), "ct-head.mhd"))
@@ -103,21 +129,7 @@ def main(argv):
     renderer = vtkRenderer()
     renderer.AddVolume(volume)
     renderer.SetBackground(0.0, 0.0, 0.0)
-    camera = renderer.GetActiveCamera()
-    camera.SetPosition(-96.0, 572.0, 252.0)
-    camera.SetFocalPoint(122.0, 135.0, 75.0)
-    camera.SetViewUp(0.0, 0.0, 1.0)
-    camera.SetViewAngle(30.0)
-    camera.SetClippingRange(200.0, 1200.0)
-    # One directional scene light (template illumination follows scene lights).
-    renderer.AutomaticLightCreationOff()
-    light = vtkLight()
-    light.SetLightTypeToSceneLight()
-    light.PositionalOff()
-    light.SetPosition(222.0, 435.0, 319.0)
-    light.SetFocalPoint(122.0, 135.0, 75.0)
-    renderer.AddLight(light)
-    renderer.TwoSidedLightingOn()
+    apply_ct_head_view(renderer)
 
     window = vtkRenderWindow()
     window.SetSize(width, height)
