@@ -54,13 +54,23 @@ Recent& Entry(Registry& registry, vtkOpenGLRenderWindow* window)
 
 void NoteProgramUse(vtkOpenGLRenderWindow* window, vtkShaderProgram* program)
 {
-  if (!window || !IsIlluminationProgram(program))
+  if (!window || !program)
   {
     return;
   }
   Registry& registry = TheRegistry();
   std::lock_guard<std::mutex> lock(registry.Mutex);
   Recent& recent = Entry(registry, window);
+  // Most frames draw with the program of the frame before: no need to search its
+  // source text (tens of KB) for the marker again.
+  if (!recent.empty() && recent.front() == program)
+  {
+    return;
+  }
+  if (!IsIlluminationProgram(program))
+  {
+    return;
+  }
   recent.remove_if([program](const vtkWeakPointer<vtkShaderProgram>& p) {
     return p == nullptr || p == program;
   });
