@@ -5,13 +5,15 @@
 // shift+left pans, right drag or wheel zooms). Keys (press h in the window for the list):
 //   s shadows   b colour bleeding   t thin-part check   r boundary refraction
 //   l template blending   i illumination on/off   m transport / per-sample
-//   + / - quality step   c reset camera   h help   q / e quit
-// While the user drags, frames are interactive: VTK's desired update rate
-// (interactor SetDesiredUpdateRate) lets the ray caster render at a reduced image
-// sample distance, and the mapper switches to a cheaper illumination setting
-// (longer illumination interval, fewer photons per sample in per-sample mode). The
-// illumination stays on. When the user lets go, the still update rate gives a
-// full-quality frame with the chosen quality step.
+//   + / - quality step   p next transfer preset   [ ] level   { } window
+//   o preset as defined   w screenshot   c reset camera   h help   q / e quit
+// ctrl + left drag: window/level (right/left moves the ramp, up/down widens it).
+// Level of detail: while the user drags, rays are cast at half the resolution in each
+// direction (image sample distance 2, a quarter of the rays), with every sample along
+// each ray kept, so the picture gets softer but never banded; the mapper also builds
+// its transport volume coarser (InteractiveTransportScale). The illumination stays on.
+// When the user lets go, a full-resolution frame with the chosen quality step follows.
+// The status strip under the picture says what is shown; it never covers the volume.
 //
 // Testing: --play-events FILE plays recorded interaction events (vtkInteractorEventRecorder,
 // e.g. made with --record FILE); "-" plays the built-in recording (drags + key presses).
@@ -24,6 +26,8 @@
 #include "Common/ScattererRenderOptions.h"
 #include "Common/ScattererScreenshot.h"
 #include "Common/ScattererVolumeCheck.h"
+#include "viewer/ScattererViewerOverlay.h"
+#include "viewer/ScattererViewerTransfer.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
@@ -51,12 +55,14 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -122,9 +128,32 @@ const QualityStep QualitySteps[] = {
 };
 const int NumberOfQualitySteps = static_cast<int>(sizeof(QualitySteps) / sizeof(QualitySteps[0]));
 
-const char* const KeyHelp = "s shadows  b bleeding  t thin  r boundary  l blending\n"
-                            "i illumination  m transport/per-sample  +/- quality\n"
-                            "c reset camera  h help  q quit  drag: rotate/pan/zoom";
+// At most 40 columns a line: the help box fits a 300-pixel window.
+const char* const KeyHelp = "s shadows    b bleeding    t thin\n"
+                            "r boundary   l blending\n"
+                            "i illumination  m transport/per-sample\n"
+                            "+/- quality  p preset  o preset reset\n"
+                            "[ ] level    { } window  w screenshot\n"
+                            "c camera     h help      q quit\n"
+                            "left drag rotate, shift/middle pan,\n"
+                            "right zoom, ctrl+left window/level";
+
+/** Image sample distance of interactive frames: a quarter of the rays, each fully sampled. */
+constexpr double InteractiveImageSampleDistance = 2.0;
+
+/** Interaction state of the window/level drag (vtkInteractorStyleImage uses the same number). */
+constexpr int WindowLevelState = 1024;
+
+double Median(std::vector<double> values)
+{
+  if (values.empty())
+  {
+    return 0.0;
+  }
+  std::sort(values.begin(), values.end());
+  const size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
 
 struct Options
 {
@@ -242,8 +271,8 @@ struct Viewer
   vtkRenderer* Renderer = nullptr;
   vtkRenderWindow* Window = nullptr;
   vtkVolume* Volume = nullptr;
-  vtkTextActor* Status = nullptr;
-  vtkTextActor* Help = nullptr;
+  scatterer_viewer::ViewerOverlay* Overlay = nullptr;
+  scatterer_viewer::ViewerTransfer* Transfer = nullptr;
   int Quality = 2;
   bool Interactive = false;
   std::chrono::steady_clock::time_point FrameStart;
@@ -253,12 +282,16 @@ struct Viewer
   int UnlitFrames = 0; // frames rendered with illumination asked for but not active
   bool LogFrames = false; // --test: one line per frame on stdout
   std::string LastFeatures;
+  std::string LastMessage; // what the last key did, when it says more than the status
+  // Per frame kind: milliseconds and rays cast (viewport pixels / image sample distance^2).
+  std::vector<double> StillMs, InteractiveMs, StillRays, InteractiveRays;
 
   /** Applies the quality step, made cheaper on interactive frames (illumination stays on). */
   void ApplyQuality()
   {
     const QualityStep& q = QualitySteps[this->Quality];
     this->Mapper->SetTransportScale(q.TransportScale);
+    this->Mapper->SetImageSampleDistance(this->Interactive ? InteractiveImageSampleDistance : 1.0);
     if (this->Interactive)
     {
       // Cheaper while dragging: the mapper itself builds the transport volume at
@@ -281,33 +314,60 @@ struct Viewer
     }
   }
 
+  /** The status strip: frame, transfer function, effects (ViewerOverlay::StatusLines lines). */
   std::string Describe() const
   {
-    auto onOff = [](bool v) { return v ? "on" : "off"; };
     vtkScattererTemplateVolumeMapper* m = this->Mapper;
+    const bool lit = m->GetIlluminationEnabled();
+    std::string effects;
+    auto add = [&](bool on, const char* name) {
+      if (on)
+      {
+        effects += effects.empty() ? name : std::string(" ") + name;
+      }
+    };
+    add(m->GetShadowsEnabled(), "shadow");
+    add(m->GetColorBleedingEnabled(), "bleed");
+    add(m->GetThinPartCheckEnabled(), "thin");
+    add(m->GetBoundaryRefractionEnabled(), "boundary");
+    add(m->GetTemplateBlendingEnabled(), "blend");
     char text[512];
-    std::snprintf(text, sizeof(text),
-      "%.0f ms/frame (%s)\n"
-      "illumination %s, %s, quality %s (+/-)\n"
-      "shadow %s bleed %s thin %s boundary %s blend %s\n"
-      "transport x%d  photons %d  interval %d   h: help",
-      this->LastFrameMs, this->Interactive ? "interactive" : "still",
-      onOff(m->GetIlluminationEnabled()),
-      m->GetIlluminationMode() == vtkScattererTemplateVolumeMapper::PER_SAMPLE ? "per-sample"
-                                                                               : "transport",
-      QualitySteps[this->Quality].Name, onOff(m->GetShadowsEnabled()),
-      onOff(m->GetColorBleedingEnabled()), onOff(m->GetThinPartCheckEnabled()),
-      onOff(m->GetBoundaryRefractionEnabled()), onOff(m->GetTemplateBlendingEnabled()),
-      m->GetTransportScale(), m->GetPhotonCap(), m->GetIlluminationInterval());
+    std::snprintf(text, sizeof(text), "%.0f ms %s  %s  quality %s\n%s\n%s",
+      this->LastFrameMs, this->Interactive ? "drag" : "still",
+      !lit ? "illumination off"
+           : m->GetIlluminationMode() == vtkScattererTemplateVolumeMapper::PER_SAMPLE ? "per-sample"
+                                                                                      : "transport",
+      QualitySteps[this->Quality].Name, this->Transfer->Describe().c_str(),
+      !this->LastMessage.empty() ? this->LastMessage.c_str()
+        : effects.empty()        ? "no effect on   h: help"
+                                 : (effects + "   h: help").c_str());
     return text;
   }
 
-  void UpdateText() { this->Status->SetInput(this->Describe().c_str()); }
+  void UpdateText() { this->Overlay->SetStatus(this->Describe()); }
+
+  /** Writes the window to the first free scatterer-viewer-N.png in the working folder. */
+  void Screenshot()
+  {
+    std::string path;
+    for (int n = 1; n < 10000; ++n)
+    {
+      path = "scatterer-viewer-" + std::to_string(n) + ".png";
+      if (!std::ifstream(path))
+      {
+        break;
+      }
+    }
+    const bool saved = scatterer_examples::WriteWindowPng(this->Window, path);
+    this->LastMessage = saved ? "saved " + path : "cannot write " + path;
+    std::cout << "scatterer-viewer: " << this->LastMessage << "\n";
+  }
 
   /** A key of the viewer; false if it is not one (the style handles it). */
   bool HandleKey(char key)
   {
     vtkScattererTemplateVolumeMapper* m = this->Mapper;
+    this->LastMessage.clear();
     switch (key)
     {
       case 's':
@@ -344,11 +404,28 @@ struct Viewer
         this->Quality = std::max(this->Quality - 1, 0);
         this->ApplyQuality();
         break;
+      case 'p':
+        this->Transfer->Next();
+        break;
+      case '[':
+      case ']':
+        this->Transfer->Shift(key == ']' ? 0.02 : -0.02);
+        break;
+      case '{':
+      case '}':
+        this->Transfer->Scale(key == '}' ? 1.25 : 0.8);
+        break;
+      case 'o':
+        this->Transfer->Reset();
+        break;
+      case 'w':
+        this->Screenshot();
+        break;
       case 'c':
         this->Renderer->ResetCamera();
         break;
       case 'h':
-        this->Help->SetVisibility(!this->Help->GetVisibility());
+        this->Overlay->ToggleHelp();
         std::cout << KeyHelp << "\n";
         break;
       default:
@@ -367,6 +444,48 @@ public:
   static ViewerInteractorStyle* New();
   vtkTypeMacro(ViewerInteractorStyle, vtkInteractorStyleTrackballCamera);
   Viewer* Owner = nullptr;
+
+  // ctrl + left drag: window/level instead of the trackball's spin.
+  void OnLeftButtonDown() override
+  {
+    if (this->Interactor->GetControlKey() && !this->Interactor->GetShiftKey() && this->Owner)
+    {
+      this->FindPokedRenderer(
+        this->Interactor->GetEventPosition()[0], this->Interactor->GetEventPosition()[1]);
+      this->StartState(WindowLevelState);
+      return;
+    }
+    this->Superclass::OnLeftButtonDown();
+  }
+
+  void OnLeftButtonUp() override
+  {
+    if (this->State == WindowLevelState)
+    {
+      this->StopState();
+      return;
+    }
+    this->Superclass::OnLeftButtonUp();
+  }
+
+  void OnMouseMove() override
+  {
+    if (this->State != WindowLevelState)
+    {
+      this->Superclass::OnMouseMove();
+      return;
+    }
+    // A full window width moves the ramp by the data range; a window height scales
+    // its width by e^2 (about 7x).
+    const int* now = this->Interactor->GetEventPosition();
+    const int* before = this->Interactor->GetLastEventPosition();
+    const int* size = this->Interactor->GetRenderWindow()->GetSize();
+    this->Owner->Transfer->Shift(static_cast<double>(now[0] - before[0]) / std::max(size[0], 1));
+    this->Owner->Transfer->Scale(
+      std::exp(2.0 * static_cast<double>(now[1] - before[1]) / std::max(size[1], 1)));
+    this->Owner->UpdateText();
+    this->Interactor->Render();
+  }
 
   void OnChar() override
   {
@@ -416,6 +535,7 @@ void OnRenderStart(vtkObject*, unsigned long, void* clientData, void*)
     viewer->Interactive = interactive;
     viewer->ApplyQuality();
   }
+  viewer->Overlay->Layout();
   viewer->UpdateText();
   viewer->FrameStart = std::chrono::steady_clock::now();
 }
@@ -431,11 +551,19 @@ void OnRenderEnd(vtkObject*, unsigned long, void* clientData, void*)
   {
     ++viewer->InteractiveFrames;
   }
+  // Rays cast: the ray caster covers the volume's viewport at 1 / image sample
+  // distance of its resolution in each direction.
+  int viewport[2];
+  viewer->Overlay->GetVolumeViewportSize(viewport);
+  const double step = viewer->Mapper->GetImageSampleDistance();
+  const double rays = std::ceil(viewport[0] / step) * std::ceil(viewport[1] / step);
+  (viewer->Interactive ? viewer->InteractiveMs : viewer->StillMs).push_back(viewer->LastFrameMs);
+  (viewer->Interactive ? viewer->InteractiveRays : viewer->StillRays).push_back(rays);
   viewer->LastFeatures = viewer->Mapper->GetLastShaderFeatures();
   if (viewer->LogFrames)
   {
-    std::printf("frame %d: %s %.0f ms, %s\n", viewer->Frames,
-      viewer->Interactive ? "interactive" : "still", viewer->LastFrameMs,
+    std::printf("frame %d: %s %.0f ms, %.0f rays, %s\n", viewer->Frames,
+      viewer->Interactive ? "interactive" : "still", viewer->LastFrameMs, rays,
       viewer->LastFeatures.c_str());
   }
   if (viewer->Mapper->GetIlluminationEnabled() && viewer->LastFeatures.rfind("stock", 0) == 0)
@@ -572,12 +700,20 @@ int main(int argc, char* argv[])
     scatterer_examples::ApplyAutoScene(image, property, renderer);
     mapper->SetBlendModeToComposite();
   }
-  // Interactive frames: the ray caster lowers the image sample distance to meet the
-  // desired update rate (VTK's own mechanism, no shader rebuild); still frames get all
-  // the time they need (full resolution).
-  mapper->AutoAdjustSampleDistancesOn();
-  mapper->SetMinimumImageSampleDistance(1.0);
-  mapper->SetMaximumImageSampleDistance(4.0);
+  // The level of detail is the viewer's own (ApplyQuality): a fixed image sample
+  // distance on interactive frames. VTK's time-driven auto-adjust also lengthens the
+  // sample distance along rays (banding) and, with a budget near the still frame's
+  // cost, hardly reduced the rays at all (312-338 ms dragging vs 323 ms still at 600^2).
+  mapper->AutoAdjustSampleDistancesOff();
+  mapper->SetImageSampleDistance(1.0);
+
+  // The transfer function: the scene's for the CT head, else the one the histogram
+  // suggests (ct-head for CT in Hounsfield units, auto otherwise).
+  scatterer_viewer::ViewerTransfer transfer(image, property);
+  const std::string preset = ctHead ? "ct-head"
+                                    : scatterer_examples::DefaultTransferPreset(
+                                        scatterer_examples::VolumeHistogram(image));
+  transfer.Select(preset, error);
 
   Viewer viewer;
   viewer.Mapper = mapper;
@@ -586,22 +722,10 @@ int main(int argc, char* argv[])
   viewer.Volume = volume;
   viewer.LogFrames = options.Test;
 
-  vtkNew<vtkTextActor> status;
-  status->GetTextProperty()->SetFontSize(options.Width < 400 ? 10 : 14);
-  status->GetTextProperty()->SetColor(1.0, 1.0, 0.6);
-  status->SetDisplayPosition(6, 6);
-  renderer->AddActor2D(status);
-  vtkNew<vtkTextActor> helpText;
-  helpText->SetInput(KeyHelp);
-  helpText->GetTextProperty()->SetFontSize(options.Width < 400 ? 10 : 14);
-  helpText->GetTextProperty()->SetColor(0.7, 0.9, 1.0);
-  helpText->GetTextProperty()->SetVerticalJustificationToTop();
-  helpText->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-  helpText->GetPositionCoordinate()->SetValue(0.02, 0.98);
-  helpText->SetVisibility(false);
-  renderer->AddActor2D(helpText);
-  viewer.Status = status;
-  viewer.Help = helpText;
+  scatterer_viewer::ViewerOverlay overlay;
+  overlay.Attach(window, renderer, KeyHelp);
+  viewer.Overlay = &overlay;
+  viewer.Transfer = &transfer;
   viewer.ApplyQuality();
   viewer.UpdateText();
 
@@ -685,9 +809,23 @@ int main(int argc, char* argv[])
     options.Output.c_str(), options.Width, options.Height, viewer.Frames,
     viewer.InteractiveFrames, viewer.UnlitFrames, viewer.LastFrameMs, viewer.LastFeatures.c_str(),
     100.0 * lit);
+  const double stillRays = Median(viewer.StillRays);
+  const double dragRays = Median(viewer.InteractiveRays);
+  std::printf("scatterer-viewer: median still frame %.0f ms, %.0f rays; median drag frame %.0f ms,"
+              " %.0f rays\n",
+    Median(viewer.StillMs), stillRays, Median(viewer.InteractiveMs), dragRays);
   if (options.Test)
   {
     bool ok = true;
+    // The level of detail, counted rather than timed (shared machines are noisy): a
+    // drag frame casts at most half the rays of a still frame. docs/viewer.md has the
+    // timings.
+    if (viewer.InteractiveFrames > 0 && !(dragRays <= 0.5 * stillRays))
+    {
+      std::cerr << "scatterer-viewer --test: drag frames cast " << dragRays
+                << " rays, still frames " << stillRays << ": no level of detail\n";
+      ok = false;
+    }
     if (lit < 0.02)
     {
       std::cerr << "scatterer-viewer --test: the image is blank\n";

@@ -13,6 +13,7 @@ packages=(
   clang libclang-rt-14-dev                        # libFuzzer + sanitizer runtimes (scripts/fuzz.sh)
   xvfb xauth libgl1-mesa-dri                      # headless X + Mesa llvmpipe
   invesalius-examples                             # the real CT head (see docs/data.md)
+  mricron-data python3-imageio                    # real MRI (Colin27) and CT angiography (stent), docs/data.md
   python3-numpy mpi-default-bin                   # pvbatch tests: image statistics, mpirun
 )
 # ParaView 5.11 (plugin, pvbatch tests; docs/paraview.md), without its recommended

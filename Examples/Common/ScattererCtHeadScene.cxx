@@ -2,12 +2,10 @@
 #include "ScattererVolumeCheck.h"
 
 #include "vtkCamera.h"
-#include "vtkColorTransferFunction.h"
 #include "vtkGPUVolumeRayCastMapper.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkNew.h"
-#include "vtkPiecewiseFunction.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkScattererVolumeReader.h"
@@ -47,26 +45,19 @@ vtkSmartPointer<vtkImageData> ReadVolumeOrCtHead(const std::string& input, std::
   return image;
 }
 
-void ApplyCtHeadProperty(vtkVolumeProperty* property)
+TransferPoints CtHeadTransferPoints()
 {
   // Piecewise linear in HU; opacity per 1 mm (scalar opacity unit distance).
-  vtkNew<vtkPiecewiseFunction> opacity;
-  const double opacityPoints[][2] = { { -1024, 0.0 }, { -600, 0.0 }, { -450, 0.1 }, { -50, 0.1 },
-    { 0, 0.0 }, { 150, 0.0 }, { 300, 0.8 }, { 2986, 0.9 } };
-  for (const auto& p : opacityPoints)
-  {
-    opacity->AddPoint(p[0], p[1]);
-  }
-  vtkNew<vtkColorTransferFunction> color;
-  const double colorPoints[][4] = { { -1024, 0.8, 0.55, 0.42 }, { -600, 0.85, 0.6, 0.45 },
-    { 0, 0.95, 0.75, 0.6 }, { 150, 0.95, 0.85, 0.75 }, { 300, 1.0, 1.0, 0.95 },
-    { 2986, 1.0, 1.0, 1.0 } };
-  for (const auto& p : colorPoints)
-  {
-    color->AddRGBPoint(p[0], p[1], p[2], p[3]);
-  }
-  property->SetScalarOpacity(opacity);
-  property->SetColor(color);
+  return TransferPoints{ "ct-head",
+    { { -1024, 0.0 }, { -600, 0.0 }, { -450, 0.1 }, { -50, 0.1 }, { 0, 0.0 }, { 150, 0.0 },
+      { 300, 0.8 }, { 2986, 0.9 } },
+    { { -1024, 0.8, 0.55, 0.42 }, { -600, 0.85, 0.6, 0.45 }, { 0, 0.95, 0.75, 0.6 },
+      { 150, 0.95, 0.85, 0.75 }, { 300, 1.0, 1.0, 0.95 }, { 2986, 1.0, 1.0, 1.0 } } };
+}
+
+void ApplyCtHeadProperty(vtkVolumeProperty* property)
+{
+  ApplyTransferPoints(CtHeadTransferPoints(), 0.0, 1.0, property);
   property->SetInterpolationTypeToLinear();
   property->SetScalarOpacityUnitDistance(1.0);
   property->SetAmbient(0.1);
@@ -122,34 +113,33 @@ void ApplyCtHeadWindowSettings(vtkRenderWindow* window)
 
 void ApplyAutoScene(vtkImageData* image, vtkVolumeProperty* property, vtkRenderer* renderer)
 {
-  // The finite range: one infinite voxel must not stretch the ramp to infinity
-  // (vtkDataSet::GetScalarRange includes infinities), which leaves every finite
-  // voxel transparent. Volumes with no finite value, or a constant one, are refused
-  // before this (CheckVolume); the fallbacks keep this function total for other callers.
-  double range[2] = { 0.0, 1.0 };
-  FiniteScalarRange(image, range);
-  if (!(range[1] > range[0]))
-  {
-    range[1] = range[0] + 1.0;
-  }
-  const double span = range[1] - range[0];
-  vtkNew<vtkPiecewiseFunction> opacity;
-  opacity->AddPoint(range[0], 0.0);
-  opacity->AddPoint(range[0] + 0.5 * span, 0.0);
-  opacity->AddPoint(range[1], 0.8);
-  vtkNew<vtkColorTransferFunction> color;
-  color->AddRGBPoint(range[0], 0.9, 0.7, 0.6);
-  color->AddRGBPoint(range[1], 1.0, 1.0, 1.0);
-  property->SetScalarOpacity(opacity);
-  property->SetColor(color);
+  // The transfer function comes from the finite values' histogram (NaN and infinities
+  // ignored: one infinite voxel must not stretch the ramp over nothing). Volumes with
+  // no finite value, or a constant one, are refused before this (CheckVolume).
+  const VolumeHistogram histogram(image);
+  TransferPoints points;
+  std::string unused;
+  MakeTransferPreset(DefaultTransferPreset(histogram), histogram, points, unused);
+  ApplyTransferPoints(points, 0.0, 1.0, property);
   property->SetInterpolationTypeToLinear();
   double spacing[3];
   image->GetSpacing(spacing);
+  // Opacities are per voxel: the unit distance is the mean spacing.
   property->SetScalarOpacityUnitDistance((spacing[0] + spacing[1] + spacing[2]) / 3.0);
   property->SetAmbient(0.1);
   property->SetDiffuse(0.9);
   property->SetSpecular(0.2);
   property->SetSpecularPower(10.0);
-  renderer->ResetCamera(image->GetBounds());
+  // A front view with the third axis up: scanners stack slices along the body's
+  // long axis, so this shows a patient upright rather than from above.
+  double bounds[6];
+  image->GetBounds(bounds);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  const double center[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
+    0.5 * (bounds[4] + bounds[5]) };
+  camera->SetFocalPoint(center);
+  camera->SetPosition(center[0], center[1] - 1.0, center[2]);
+  camera->SetViewUp(0.0, 0.0, 1.0);
+  renderer->ResetCamera(bounds);
 }
 }

@@ -5,6 +5,7 @@
 #ifndef ScattererCtHeadScene_h
 #define ScattererCtHeadScene_h
 
+#include "ScattererTransferPresets.h"
 #include "vtkSmartPointer.h"
 
 #include <string>
@@ -29,6 +30,9 @@ std::string CtHeadPath();
  */
 vtkSmartPointer<vtkImageData> ReadVolumeOrCtHead(const std::string& input, std::string& error);
 
+/** The scene's transfer functions: skin and bone, in Hounsfield units. */
+TransferPoints CtHeadTransferPoints();
+
 /** Transfer functions and material (ambient/diffuse/specular) of the scene; shading off. */
 void ApplyCtHeadProperty(vtkVolumeProperty* property);
 
@@ -45,8 +49,9 @@ void ApplyCtHeadMapperSettings(vtkGPUVolumeRayCastMapper* mapper);
 void ApplyCtHeadWindowSettings(vtkRenderWindow* window);
 
 /**
- * For volumes other than the CT head: a grey ramp over the finite scalar range with
- * opacity rising through the upper half, the camera reset to fit, a headlight.
+ * For volumes other than the CT head: the transfer function DefaultTransferPreset
+ * picks from the histogram (the scene's for CT in HU, else "auto"), the camera reset
+ * to fit, a headlight.
  */
 void ApplyAutoScene(vtkImageData* image, vtkVolumeProperty* property, vtkRenderer* renderer);
 }
