@@ -586,10 +586,14 @@ void vtkScattererTransportVolume::vtkInternals::GatherLight(
 bool vtkScattererTransportVolume::vtkInternals::AddScatteredAndAmbientLight(const Inputs& in, std::string& why)
 {
   // The coarse grid: blocks of `block` fine texels, so that a coarse texel spans about
-  // 4 volume voxels whatever the transport scale (the diffusion's reach per iteration
-  // then stays the same), anchored like the fine grid (to multiples of `block` in
-  // global fine indices) so pieces share it.
-  const int block = std::max(1, 4 / std::max(1, in.Downsample));
+  // 4 volume voxels (the diffusion's reach per iteration then stays the same),
+  // anchored like the fine grid (to multiples of `block` in global fine indices) so
+  // pieces share it. At least 2: a coarse texel's medium is the mean of its fine
+  // texels', and one point sample of the transfer function standing for a whole
+  // block (transport scale 3 or more) let the diffusion pile the bone's colour up
+  // into yellow-green blotches on the CT head; so from scale 3 on a coarse texel
+  // spans 6 or more voxels.
+  const int block = std::max(2, 4 / std::max(1, in.Downsample));
   this->Block = block;
   for (int a = 0; a < 3; ++a)
   {

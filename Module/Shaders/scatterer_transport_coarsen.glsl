@@ -3,10 +3,11 @@
 //============================================================================
 // Light transport volume, pass 3a: the medium and the multiple-scattering source
 // on the diffusion's coarse grid (one layer per draw). A coarse texel covers a block
-// of st_block^3 fine texels (st_block: 4, 2 or 1, so that a coarse texel spans about
-// 4 volume voxels whatever TransportScale): its medium (albedo, sigma_t) is the mean
-// of theirs (st_mediumAt at each), its source the mean of theirs (linear fetches at
-// the centres of 2x2x2 sub-blocks, or one texel).
+// of st_block^3 fine texels (st_block: 4 or 2, so that a coarse texel spans about
+// 4 volume voxels, or 2 fine texels at TransportScale 3 and above): its medium
+// (albedo, sigma_t) is the mean of theirs (st_mediumAt at each), its source the mean
+// of theirs (linear fetches at the centres of 2x2x2 sub-blocks). Never one point
+// sample: see vtkScattererTransportVolume.cxx, AddScatteredAndAmbientLight.
 //
 // Its alpha also carries the ambient occlusion of the block centre p: VTK's ambient
 // light comes from every direction, so it is occluded by the medium around p.
@@ -41,20 +42,13 @@ void main()
   }
   medium /= b * b * b;
   vec3 source = vec3(0.0);
-  if (st_block == 1)
+  int halves = st_block / 2;
+  for (int k = 0; k < halves * halves * halves; ++k)
   {
-    source = texelFetch(st_source, ivec3(fine), 0).rgb;
+    vec3 o = 2.0 * vec3(float(k % halves), float((k / halves) % halves), float(k / (halves * halves)));
+    source += texture(st_source, (fine + o + vec3(1.0)) / st_gridDims).rgb;
   }
-  else
-  {
-    int halves = st_block / 2;
-    for (int k = 0; k < halves * halves * halves; ++k)
-    {
-      vec3 o = 2.0 * vec3(float(k % halves), float((k / halves) % halves), float(k / (halves * halves)));
-      source += texture(st_source, (fine + o + vec3(1.0)) / st_gridDims).rgb;
-    }
-    source /= float(halves * halves * halves);
-  }
+  source /= float(halves * halves * halves);
   vec3 centre = fine + vec3(0.5 * (b - 1.0));
   float open = 0.0;
   for (int a = 0; a < 3; ++a)

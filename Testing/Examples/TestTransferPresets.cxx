@@ -4,21 +4,18 @@
 // (a lit, bright, varied picture rather than nothing, dim fog or a solid box).
 #include "Common/ScattererCtHeadScene.h"
 #include "Common/ScattererTransferPresets.h"
+#include "ScattererInProcessRender.h"
 
 #include "vtkColorTransferFunction.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
-#include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkScattererTemplateVolumeMapper.h"
 #include "vtkScattererVolumeReader.h"
 #include "vtkShortArray.h"
-#include "vtkUnsignedCharArray.h"
-#include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
-#include "vtkWindowToImageFilter.h"
 
 #include <gtest/gtest.h>
 
@@ -157,32 +154,15 @@ PictureStats RenderAutomatic(const std::string& path)
     ADD_FAILURE() << error;
     return stats;
   }
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(160, 160);
-  window->SetMultiSamples(0);
-  window->OffScreenRenderingOn();
-  vtkNew<vtkRenderer> renderer;
-  window->AddRenderer(renderer);
-  vtkNew<vtkScattererTemplateVolumeMapper> mapper;
-  mapper->SetInputData(image);
-  mapper->SetBlendModeToComposite();
-  vtkNew<vtkVolumeProperty> property;
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(property);
-  renderer->AddVolume(volume);
-  se::ApplyAutoScene(image, property, renderer);
-  window->Render();
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->Update();
-  auto* pixels = vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
-  const int comps = pixels->GetNumberOfComponents();
+  const std::vector<unsigned char> rgb = scatterer_testing::RenderRgb(image,
+    [&](vtkVolumeProperty* property, vtkRenderer* renderer, vtkScattererTemplateVolumeMapper* mapper) {
+      mapper->SetBlendModeToComposite();
+      se::ApplyAutoScene(image, property, renderer);
+    });
   double lit = 0.0, sum = 0.0, squares = 0.0;
-  for (vtkIdType i = 0; i < pixels->GetNumberOfTuples(); ++i)
+  for (size_t i = 0; i + 2 < rgb.size(); i += 3)
   {
-    const double y = 0.2126 * pixels->GetTypedComponent(i, 0) +
-      0.7152 * pixels->GetTypedComponent(i, 1 % comps) + 0.0722 * pixels->GetTypedComponent(i, 2 % comps);
+    const double y = 0.2126 * rgb[i] + 0.7152 * rgb[i + 1] + 0.0722 * rgb[i + 2];
     if (y > 8.0)
     {
       lit += 1.0;
@@ -190,7 +170,7 @@ PictureStats RenderAutomatic(const std::string& path)
       squares += y * y;
     }
   }
-  stats.LitShare = lit / pixels->GetNumberOfTuples();
+  stats.LitShare = lit / static_cast<double>(rgb.size() / 3);
   if (lit > 0.0)
   {
     stats.MeanLuminance = sum / lit;

@@ -1,0 +1,42 @@
+#include "ScattererInProcessRender.h"
+
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkScattererTemplateVolumeMapper.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+#include "vtkWindowToImageFilter.h"
+
+namespace scatterer_testing
+{
+std::vector<unsigned char> RenderRgb(vtkImageData* image, const SceneSetup& setup, int size)
+{
+  vtkNew<vtkRenderWindow> window;
+  window->SetSize(size, size);
+  window->SetMultiSamples(0);
+  window->OffScreenRenderingOn();
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  vtkNew<vtkScattererTemplateVolumeMapper> mapper;
+  mapper->SetInputData(image);
+  vtkNew<vtkVolumeProperty> property;
+  vtkNew<vtkVolume> volume;
+  volume->SetMapper(mapper);
+  volume->SetProperty(property);
+  renderer->AddVolume(volume);
+  setup(property, renderer, mapper);
+  window->Render();
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->SetInputBufferTypeToRGB();
+  grab->Update();
+  auto* pixels = vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
+  std::vector<unsigned char> rgb(pixels->GetPointer(0), pixels->GetPointer(0) + pixels->GetNumberOfValues());
+  mapper->ReleaseGraphicsResources(window);
+  return rgb;
+}
+}
