@@ -476,23 +476,24 @@ Vec3 QFormWorld(const NiftiSpec& spec, int i, int j, int k)
   return RasToLps(ras);
 }
 
-// 90 degrees about z plus a flip (determinant < 0): i -> -y, j -> -x, k -> +z.
+// 90 degrees about z plus a flip of z (determinant < 0): i -> -y, j -> +x, k -> -z. Not a
+// symmetric matrix, so a transposed direction shows.
 NiftiSpec RotatedFlippedSForm()
 {
   NiftiSpec spec;
   spec.SFormCode = 2; // aligned anatomical
-  const float rows[3][4] = { { 0, -0.75f, 0, 10 }, { -0.5f, 0, 0, -20 }, { 0, 0, 2, 30 } };
+  const float rows[3][4] = { { 0, 0.75f, 0, 10 }, { -0.5f, 0, 0, -20 }, { 0, 0, -2, 30 } };
   std::memcpy(spec.SRow, rows, sizeof(rows));
   return spec;
 }
 
-// 90 degrees about x: b = sin 45, a = cos 45.
+// 120 degrees about (1,1,1): a = b = c = d = 1/2 (i -> y, j -> z, k -> x; not symmetric).
 NiftiSpec RotatedQForm(float qfac)
 {
   NiftiSpec spec;
   spec.QFormCode = 1; // scanner anatomical
   spec.QFac = qfac;
-  spec.Quatern[0] = float(std::sqrt(0.5));
+  spec.Quatern[0] = spec.Quatern[1] = spec.Quatern[2] = 0.5f;
   spec.QOffset[0] = -5;
   spec.QOffset[1] = 12;
   spec.QOffset[2] = 7;
