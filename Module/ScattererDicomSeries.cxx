@@ -147,7 +147,7 @@ DicomSeriesReader OpenDicomSeries(
   {
     if (seriesCount == 0)
     {
-      result.Problem = "the folder holds no DICOM image (no file in it is DICOM with pixel data).";
+      result.Problem = "the folder holds no DICOM images (no file in it is DICOM with pixel data).";
       return result;
     }
     if (seriesCount > 1)
