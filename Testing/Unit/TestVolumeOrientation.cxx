@@ -589,3 +589,14 @@ TEST_F(VolumeOrientationTest, DicomAndNiftiOfTheSameAnatomyAgree)
   ExpectPlaced(dicom, SagittalWorld);
   ExpectPlaced(nifti, SagittalWorld);
 }
+
+// The placement also reaches a pipeline (RequestInformation announces the direction).
+TEST_F(VolumeOrientationTest, PipelineOutputCarriesThePlacement)
+{
+  const NiftiSpec spec = RotatedFlippedSForm();
+  WriteNifti(Path("s.nii"), spec);
+  vtkNew<vtkScattererVolumeReader> reader;
+  reader->SetFileName(Path("s.nii").c_str());
+  reader->Update();
+  ExpectPlaced(reader->GetOutput(), [&](int i, int j, int k) { return SFormWorld(spec, i, j, k); });
+}
