@@ -1,13 +1,15 @@
 #include "vtkScattererVolumeReader.h"
 
 #include "vtkCallbackCommand.h"
-#include "vtkDICOMImageReader.h"
 #include "vtkDataArray.h"
 #include "vtkExecutive.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkMatrix3x3.h"
+#include "vtkMatrix4x4.h"
 #include "vtkMetaImageReader.h"
+#include "vtkNIFTIImageHeader.h"
 #include "vtkNIFTIImageReader.h"
 #include "vtkNew.h"
 #include "vtkNrrdReader.h"
@@ -17,7 +19,9 @@
 #include "vtkXMLImageDataReader.h"
 #include "vtksys/SystemTools.hxx"
 
+#include "ScattererDicomSeries.h"
 #include "ScattererVolumeHeaderCheck.h"
+#include "ScattererVolumeOrientation.h"
 
 #include <algorithm>
 #include <cctype>
@@ -177,6 +181,58 @@ bool SameLayout(const scatterer_io::VolumeLayout& a, const scatterer_io::VolumeL
   }
   return a.Components == b.Components;
 }
+
+void CopyMatrix(vtkMatrix4x4* m, double out[16])
+{
+  for (int r = 0; r < 4; ++r)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      out[4 * r + c] = m->GetElement(r, c);
+    }
+  }
+}
+
+// NIfTI-1 (nifti1.h, "METHOD 3" then "METHOD 2"): the sform when sform_code > 0, else the
+// qform when qform_code > 0, else no anatomical frame (method 1: the grid stays at the
+// origin, unrotated). vtkNIFTIImageReader hands both as matrices from its data coordinates
+// (pixdim factored out; with qfac = -1 it reversed the slices and adjusted the matrices).
+// A sheared sform cannot become a direction; the qform (a rotation by construction) then
+// places the volume if the file has one.
+std::string PlaceNifti(vtkNIFTIImageReader* reader, vtkImageData* image,
+  scatterer_io::VolumePlacement* placement, bool* oriented)
+{
+  *oriented = false;
+  vtkNIFTIImageHeader* header = reader->GetNIFTIHeader();
+  const bool sform = header && header->GetSFormCode() > 0 && reader->GetSFormMatrix();
+  const bool qform = header && header->GetQFormCode() > 0 && reader->GetQFormMatrix();
+  double matrix[16];
+  std::string problem;
+  if (sform)
+  {
+    CopyMatrix(reader->GetSFormMatrix(), matrix);
+    problem = scatterer_io::PlaceInPatientSpace(matrix, image->GetOrigin(), image->GetSpacing(),
+      scatterer_io::PatientFrame::RAS, placement);
+    if (problem.empty())
+    {
+      *oriented = true;
+      return {};
+    }
+    if (!qform)
+    {
+      return "the sform: " + problem;
+    }
+  }
+  if (qform)
+  {
+    CopyMatrix(reader->GetQFormMatrix(), matrix);
+    problem = scatterer_io::PlaceInPatientSpace(matrix, image->GetOrigin(), image->GetSpacing(),
+      scatterer_io::PatientFrame::RAS, placement);
+    *oriented = problem.empty();
+    return problem.empty() ? std::string() : "the qform: " + problem;
+  }
+  return {};
+}
 }
 
 vtkScattererVolumeReader::vtkScattererVolumeReader()
@@ -248,12 +304,16 @@ bool vtkScattererVolumeReader::ReadChecked()
   // crash on or misread bad headers; ScattererVolumeHeaderCheck.h).
   bool checked = false;
   scatterer_io::HeaderCheck header;
-  if (vtksys::SystemTools::FileIsDirectory(path))
+  ErrorSink sink;
+  std::string dicomProblem;
+  if (vtksys::SystemTools::FileIsDirectory(path) || EndsWith(lower, ".dcm") ||
+    EndsWith(lower, ".dicom"))
   {
     this->FormatName = "DICOM series";
-    auto dicom = vtkSmartPointer<vtkDICOMImageReader>::New();
-    dicom->SetDirectoryName(path.c_str());
-    reader = dicom;
+    auto dicom =
+      scatterer_io::OpenDicomSeries(path, [&sink](vtkAlgorithm* a) { sink.Watch(a); });
+    reader = dicom.Reader;
+    dicomProblem = dicom.Problem;
   }
   else if (EndsWith(lower, ".mhd") || EndsWith(lower, ".mha"))
   {
@@ -292,19 +352,20 @@ bool vtkScattererVolumeReader::ReadChecked()
   else
   {
     this->Fail("Cannot read volume '" + path +
-      "': unknown format (expected .mhd, .mha, .nii, .nii.gz, .vti, .nrrd, .nhdr or a DICOM "
-      "folder).");
+      "': unknown format (expected .mhd, .mha, .nii, .nii.gz, .vti, .nrrd, .nhdr, a DICOM "
+      "folder or a .dcm file of a series).");
     return false;
   }
   const std::string failure = "Cannot read " + this->FormatName + " volume '" + path + "': ";
-  if (!header.Problem.empty())
+  if (!header.Problem.empty() || !dicomProblem.empty())
   {
-    this->Fail(failure + header.Problem);
+    this->Fail(failure + header.Problem + dicomProblem);
     return false;
   }
-
-  ErrorSink sink;
-  sink.Watch(reader);
+  if (this->FormatName != "DICOM series")
+  {
+    sink.Watch(reader);
+  }
   std::string ioErrors;
   if (this->FormatName == "MetaImage")
   {
@@ -325,6 +386,11 @@ bool vtkScattererVolumeReader::ReadChecked()
       // vtkDICOMImageReader's words ("Couldn't get sorted files. Slices may be in wrong
       // order!; Either a filename was not specified or ...") describe its own state.
       why = "the folder holds no DICOM images that VTK's DICOM reader can parse";
+    }
+    if (this->FormatName == "DICOM series" && !scatterer_io::HasVtkDicom())
+    {
+      // Compressed series are the usual reason here; say what this build cannot do.
+      why += " (" + scatterer_io::DicomSupport() + ")";
     }
     if (checked && header.Encoding == "gzip" && why.find("gzip") != std::string::npos)
     {
@@ -379,8 +445,45 @@ bool vtkScattererVolumeReader::ReadChecked()
     this->Fail(failure + layoutProblem);
     return false;
   }
+  // Where the grid lies in patient space (LPS; ScattererVolumeOrientation.h): DICOM's
+  // patient matrix, NIfTI's sform or qform. The other formats keep what VTK's reader gave.
+  scatterer_io::VolumePlacement placement;
+  bool oriented = false;
+  std::string placementProblem;
+  if (this->FormatName == "DICOM series")
+  {
+    placementProblem = scatterer_io::PlaceDicomSeries(reader, image, &placement, &oriented);
+  }
+  else if (this->FormatName == "NIfTI")
+  {
+    placementProblem =
+      PlaceNifti(vtkNIFTIImageReader::SafeDownCast(reader), image, &placement, &oriented);
+  }
+  if (!placementProblem.empty())
+  {
+    this->Fail(failure + placementProblem);
+    return false;
+  }
+  if (oriented)
+  {
+    scatterer_io::VolumeLayout placed = delivered;
+    std::copy(placement.Origin, placement.Origin + 3, placed.Origin);
+    std::copy(placement.Spacing, placement.Spacing + 3, placed.Spacing);
+    const std::string placedProblem = scatterer_io::CheckLayout(placed, checked);
+    if (!placedProblem.empty())
+    {
+      this->Fail(failure + "placed in patient space, " + placedProblem);
+      return false;
+    }
+  }
   this->Cached = vtkSmartPointer<vtkImageData>::New();
   this->Cached->ShallowCopy(image);
+  if (oriented)
+  {
+    this->Cached->SetOrigin(placement.Origin);
+    this->Cached->SetSpacing(placement.Spacing);
+    this->Cached->SetDirectionMatrix(placement.Direction);
+  }
   this->CacheTime.Modified();
   return true;
 }
@@ -397,6 +500,8 @@ int vtkScattererVolumeReader::RequestInformation(
     vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), this->Cached->GetExtent(), 6);
   outInfo->Set(vtkDataObject::SPACING(), this->Cached->GetSpacing(), 3);
   outInfo->Set(vtkDataObject::ORIGIN(), this->Cached->GetOrigin(), 3);
+  outInfo->Set(
+    vtkDataObject::DIRECTION(), this->Cached->GetDirectionMatrix()->GetData(), 9);
   vtkDataArray* scalars = this->Cached->GetPointData()->GetScalars();
   vtkDataObject::SetPointDataActiveScalarInfo(
     outInfo, scalars->GetDataType(), scalars->GetNumberOfComponents());
@@ -434,6 +539,11 @@ vtkSmartPointer<vtkImageData> vtkScattererVolumeReader::ReadVolume(
     error->clear();
   }
   return reader->Cached;
+}
+
+std::string vtkScattererVolumeReader::GetDicomSupport()
+{
+  return scatterer_io::DicomSupport();
 }
 
 void vtkScattererVolumeReader::PrintSelf(ostream& os, vtkIndent indent)

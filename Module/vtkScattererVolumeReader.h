@@ -19,6 +19,16 @@
  * the header promised and have a finite, positive spacing and a finite origin
  * (for every format). Any exception a reader throws becomes an error too, so
  * no file makes ReadVolume crash.
+ *
+ * Placement in patient space, in one convention for all formats: LPS (DICOM's and
+ * ITK's; ScattererVolumeOrientation.h says why). A DICOM series' Image Orientation and
+ * Position (Patient) and a NIfTI's sform (sform_code > 0), else qform (qform_code > 0),
+ * become the output's origin, spacing and direction matrix, so the same anatomy lands on
+ * the same points from either format. MetaImage, NRRD and VTK XML images keep the
+ * axis-aligned grid VTK 9.1's readers deliver (docs/data.md).
+ *
+ * A folder or a .dcm/.dicom path is read as a DICOM series (ScattererDicomSeries.h: with
+ * vtk-dicom when the build has it, else VTK's vtkDICOMImageReader; GetDicomSupport()).
  */
 #ifndef vtkScattererVolumeReader_h
 #define vtkScattererVolumeReader_h
@@ -47,6 +57,12 @@ public:
 
   /** The last error, empty after a successful read. */
   const std::string& GetErrorMessage() const { return this->ErrorMessage; }
+
+  /**
+   * One line: which DICOM reader this build uses (vtk-dicom, or VTK's vtkDICOMImageReader
+   * in builds without it, such as the ParaView plugin) and what it does not support.
+   */
+  static std::string GetDicomSupport();
 
   /** The format the path was taken for ("MetaImage", "NIfTI", ...), empty if none. */
   const std::string& GetFormatName() const { return this->FormatName; }
