@@ -16,7 +16,15 @@
 #include "vtkDICOMImageReader.h"
 #endif
 
+#include <csignal>
+#include <cstring>
 #include <sstream>
+
+#if defined(__unix__)
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#endif
 
 namespace scatterer_io
 {
@@ -86,6 +94,67 @@ bool Decodable(const std::string& uid)
     }
   }
   return false;
+}
+
+bool DecodedByGdcm(const std::string& uid)
+{
+  for (const Syntax& syntax : kSyntaxes)
+  {
+    if (uid == syntax.Uid)
+    {
+      return syntax.NeedsGdcm;
+    }
+  }
+  return false;
+}
+
+/**
+ * Decodes @p reader's series once in a child process: empty when that worked, else
+ * what went wrong. Debian's GDCM 3.0 ends the process with an assertion (abort) on
+ * a truncated or corrupt JPEG stream, where it should report an error; a crash in
+ * the child is a message here. Costs one more decode, for GDCM's syntaxes only.
+ */
+std::string TrialDecodeInChild(vtkAlgorithm* reader)
+{
+#if defined(__unix__)
+  const pid_t child = fork();
+  if (child < 0)
+  {
+    return ""; // no child: decode in this process as before
+  }
+  if (child == 0)
+  {
+    // The child's messages would repeat the parent's; the exit status says it all.
+    const int null = open("/dev/null", O_WRONLY);
+    if (null >= 0)
+    {
+      dup2(null, 1);
+      dup2(null, 2);
+    }
+    reader->Update();
+    _exit(0);
+  }
+  int status = 0;
+  // A decoder that hangs is stopped after a minute (a CT series decodes in seconds).
+  for (int waited = 0; waitpid(child, &status, WNOHANG) == 0; ++waited)
+  {
+    if (waited >= 6000)
+    {
+      kill(child, SIGKILL);
+      waitpid(child, &status, 0);
+      return "decoding its pixel data did not finish within a minute";
+    }
+    usleep(10000);
+  }
+  if (WIFSIGNALED(status))
+  {
+    return std::string("its compressed pixel data cannot be decoded: the decoder crashed (") +
+      strsignal(WTERMSIG(status)) + "), so the stream is corrupt or truncated";
+  }
+#else
+  (void)reader;
+#endif
+  return "";
 }
 
 std::string SyntaxName(const std::string& uid)
@@ -199,6 +268,7 @@ DicomSeriesReader OpenDicomSeries(
   // Headers only: refuse transfer syntaxes this build cannot decode before any pixel is
   // read, because vtk-dicom then delivers zeros with no error (only a GDCM warning).
   reader->UpdateInformation();
+  bool gdcm = false; // some file needs GDCM's codecs (JPEG, JPEG-LS, JPEG 2000)
   if (vtkDICOMMetaData* meta = reader->GetMetaData())
   {
     for (int i = 0; i < meta->GetNumberOfInstances(); ++i)
@@ -210,6 +280,15 @@ DicomSeriesReader OpenDicomSeries(
           ") is not one this build decodes; " + DicomSupport();
         return result;
       }
+      gdcm = gdcm || DecodedByGdcm(syntax);
+    }
+  }
+  if (gdcm)
+  {
+    result.Problem = TrialDecodeInChild(reader);
+    if (!result.Problem.empty())
+    {
+      return result;
     }
   }
   result.Reader = reader;

@@ -348,8 +348,7 @@ TEST_F(VolumeOrientationTest, RleCompressedDicomSeriesReads)
   ExpectPlaced(Read(Path("rle")), SagittalWorld);
 }
 
-// A transfer syntax nothing here decodes (MPEG-2 video) fails in one line. (A corrupt JPEG
-// stream is not tested: Debian's GDCM aborts on it with an assertion; docs/data.md.)
+// A transfer syntax nothing here decodes (MPEG-2 video) fails in one line.
 TEST_F(VolumeOrientationTest, UnsupportedTransferSyntaxFailsInOneLine)
 {
   WriteSagittalSeries(Path("mpeg"), [](int s) {
@@ -366,6 +365,29 @@ TEST_F(VolumeOrientationTest, UnsupportedTransferSyntaxFailsInOneLine)
     << error;
   EXPECT_EQ(error.find('\n'), std::string::npos) << error;
   EXPECT_EQ(error.find("vtkInformation"), std::string::npos) << error;
+}
+
+// A truncated JPEG-lossless stream: Debian's GDCM ends the process with an assertion
+// on it, so the reader decodes GDCM's syntaxes once in a child process first. The
+// process lives on and says what is wrong in one line.
+TEST_F(VolumeOrientationTest, CorruptJpegStreamFailsInOneLineInsteadOfAborting)
+{
+  if (!HasVtkDicom())
+    GTEST_SKIP() << vtkScattererVolumeReader::GetDicomSupport();
+  WriteSagittalSeries(Path("jpeg"), [](int s) {
+    DicomSlice spec = Sagittal(s);
+    spec.TransferSyntax = "1.2.840.10008.1.2.4.70"; // JPEG lossless, first-order prediction
+    spec.Encapsulated = true;
+    // SOI, then a lossless frame header (SOF3) cut off after its length.
+    spec.Fragment = { 0xFF, 0xD8, 0xFF, 0xC3, 0x00, 0x0B, 0x10, 0x00 };
+    return spec;
+  });
+  const std::string error = ReadError(Path("jpeg"));
+  std::cout << "message: " << error << "\n";
+  EXPECT_EQ(error.rfind("Cannot read DICOM series volume '" + Path("jpeg") + "': ", 0), 0u)
+    << error;
+  EXPECT_NE(error.find("corrupt or truncated"), std::string::npos) << error;
+  EXPECT_EQ(error.find('\n'), std::string::npos) << error;
 }
 
 TEST_F(VolumeOrientationTest, FolderWithTwoSeriesIsRefusedWithAList)
