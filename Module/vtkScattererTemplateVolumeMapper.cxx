@@ -785,8 +785,6 @@ std::string vtkScattererTemplateVolumeMapper::UpdateTransport(
     t.CropMin[a] = static_cast<float>(this->CroppingRegionPlanes[2 * a]);
     t.CropMax[a] = static_cast<float>(this->CroppingRegionPlanes[2 * a + 1]);
   }
-  const bool interactive = vol->GetAllocatedRenderTime() < 1.0;
-  t.Downsample = interactive ? this->InteractiveTransportScale : this->TransportScale;
   const auto& lights = plan.Lights;
   t.Lights.clear();
   for (int l = 0; l < lights.Count(); ++l)
@@ -811,6 +809,16 @@ std::string vtkScattererTemplateVolumeMapper::UpdateTransport(
   t.MultipleScattering = static_cast<float>(this->MultipleScattering);
 
   auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  // Interactive frames (a time budget under a second) build the volume coarser, but
+  // only when it must be rebuilt at all: while the user orbits under a scene light,
+  // the still frames' volume stays valid, and a coarse one would cost a build now and
+  // another when the user lets go.
+  t.Downsample = this->TransportScale;
+  const bool interactive = vol->GetAllocatedRenderTime() < 1.0;
+  if (interactive && !in.Transport->IsCurrent(renWin, t))
+  {
+    t.Downsample = this->InteractiveTransportScale;
+  }
   std::string why;
   if (!in.Transport->Update(renWin, t, why))
   {

@@ -147,7 +147,9 @@ public:
    * Transport mode: volume voxels per transport-volume voxel along each axis
    * for still frames (default 2: 1/8 of the voxels), and for interactive frames
    * (the volume's allocated render time below 1 s, as VTK's interactor asks
-   * while the user drags; default 4). Smaller is sharper and slower.
+   * while the user drags; default 4) that must rebuild the volume: when nothing it
+   * depends on changed (orbiting under a scene light), interactive frames keep the
+   * still frames' volume. Smaller is sharper and slower.
    */
   vtkScattererSetClampMacro(TransportScale, int, 1, 8);
   vtkGetMacro(TransportScale, int);

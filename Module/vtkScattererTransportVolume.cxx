@@ -784,6 +784,12 @@ std::uint64_t KeyOf(const vtkScattererTransportVolume::Inputs& in)
 }
 }
 
+bool vtkScattererTransportVolume::IsCurrent(vtkOpenGLRenderWindow* window, const Inputs& in) const
+{
+  const vtkInternals& s = *this->Internals;
+  return s.HasKey && s.Context == window && s.LightTexture && KeyOf(in) == s.Key;
+}
+
 bool vtkScattererTransportVolume::Update(
   vtkOpenGLRenderWindow* window, const Inputs& in, std::string& why)
 {
@@ -798,7 +804,7 @@ bool vtkScattererTransportVolume::Update(
     s.Release(s.Context);
   }
   const std::uint64_t key = KeyOf(in);
-  if (s.HasKey && key == s.Key && s.Context == window && s.LightTexture)
+  if (this->IsCurrent(window, in))
   {
     s.LastMs = 0.0;
     return true;

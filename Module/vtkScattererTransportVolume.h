@@ -107,6 +107,9 @@ public:
    */
   bool Update(vtkOpenGLRenderWindow* window, const Inputs& inputs, std::string& why);
 
+  /** True when Update(@p window, @p inputs) would keep the last build as it is. */
+  bool IsCurrent(vtkOpenGLRenderWindow* window, const Inputs& inputs) const;
+
   /** The received-light texture (RGB, world irradiance summed over the lights). */
   vtkTextureObject* GetLightTexture() const;
 

@@ -264,3 +264,46 @@ TEST(TransportVolume, RebuiltOnlyWhenWhatItDependsOnChanges)
   EXPECT_EQ(transport->GetBuildCount(), first + 2) << "a light move was not seen";
   window->RemoveRenderer(scene.Renderer);
 }
+
+// Interactive frames (allocated render time < 1 s) build coarser only when they must
+// rebuild: orbiting under a scene light keeps the still frames' volume (a coarse build
+// would be paid again when the user lets go); a light that moves gets a coarse build,
+// and the next still frame a full one.
+TEST(TransportVolume, InteractiveFramesKeepTheStillVolumeUnlessTheyMustRebuild)
+{
+  const int n = 24;
+  auto image = MakeVolume(n, 1.0, Slab(8, 15));
+  TransportScene scene(image, 0.3);
+  scene.SetDirectional(0, 0, 1);
+  scene.Mapper->SetTransportScale(1);
+  scene.Mapper->SetInteractiveTransportScale(4);
+  vtkRenderWindow* window = scatterer_testing::SharedWindow();
+  window->AddRenderer(scene.Renderer);
+  vtkScattererTransportVolume* transport = scene.Mapper->GetTransportVolume();
+  window->SetDesiredUpdateRate(0.0001); // still
+  window->Render();
+  const int first = transport->GetBuildCount();
+  int dims[3];
+  transport->GetDimensions(dims);
+  const int stillDims = dims[0];
+
+  window->SetDesiredUpdateRate(30.0); // interactive: 1/30 s per frame
+  scene.Renderer->GetActiveCamera()->Azimuth(20);
+  window->Render();
+  EXPECT_EQ(transport->GetBuildCount(), first) << "an orbit under a scene light rebuilt it";
+  transport->GetDimensions(dims);
+  EXPECT_EQ(dims[0], stillDims) << "the interactive frame did not use the still volume";
+
+  scene.SetDirectional(1, 0, 1);
+  window->Render();
+  EXPECT_EQ(transport->GetBuildCount(), first + 1) << "a light move while dragging was not seen";
+  transport->GetDimensions(dims);
+  EXPECT_LT(dims[0], stillDims) << "the rebuild while dragging was not coarser";
+
+  window->SetDesiredUpdateRate(0.0001); // let go
+  window->Render();
+  EXPECT_EQ(transport->GetBuildCount(), first + 2) << "the still frame kept the coarse volume";
+  transport->GetDimensions(dims);
+  EXPECT_EQ(dims[0], stillDims);
+  window->RemoveRenderer(scene.Renderer);
+}
