@@ -1,7 +1,8 @@
 // scatterer-render: renders a volume to a PNG and reports frame times.
 //
-// Default: the real CT head benchmark scene (shared/scenes/ct-head.json) at
-// 512x512. Run with --help for the options.
+// Default: the real CT head benchmark scene (Examples/Common/ScattererCtHeadScene.cxx)
+// at 512x512. Run with --help for the options and the exit statuses.
+#include "Common/ScattererCommandLine.h"
 #include "Common/ScattererCtHeadScene.h"
 #include "Common/ScattererFrameCheck.h"
 #include "Common/ScattererMapperSetup.h"
@@ -58,23 +59,12 @@ FrameStats Summarize(std::vector<double> ms)
 int main(int argc, char* argv[])
 {
   scatterer_examples::RenderOptions options;
+  const int parsed = scatterer_examples::ParseRenderOptions(argc, argv, options);
+  if (parsed != scatterer_examples::ContinueRun)
+  {
+    return parsed; // --help, --version or a usage error, printed
+  }
   std::string error;
-  if (!scatterer_examples::ParseRenderOptions(argc, argv, options, error))
-  {
-    std::cerr << "scatterer-render: " << error << "\n"
-              << "Run 'scatterer-render --help' for the options.\n";
-    return 2;
-  }
-  if (options.Help)
-  {
-    std::cout << scatterer_examples::RenderUsage();
-    return 0;
-  }
-  if (options.Version)
-  {
-    std::cout << scatterer_examples::VersionText("scatterer-render");
-    return 0;
-  }
   // The input first, then the display: a missing or unusable file is the user's
   // problem to fix whatever machine this runs on, and reading needs no display.
   const bool ctHead = options.Input.empty();

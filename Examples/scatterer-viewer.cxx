@@ -21,6 +21,7 @@
 // open; --test is --play-events - --size 300x300 --output scatterer-viewer-test.png for
 // whichever of those was not given, and also checks that the PNG is not blank and that
 // illumination was on in every frame.
+#include "Common/ScattererCommandLine.h"
 #include "Common/ScattererCtHeadScene.h"
 #include "Common/ScattererFrameCheck.h"
 #include "Common/ScattererRenderOptions.h"
@@ -161,89 +162,78 @@ struct Options
   std::string Output;
   std::string PlayEvents;
   std::string Record;
+  std::string Preset; // --preset NAME; empty: none (the name is checked where presets are applied)
   int Width = 600;
   int Height = 600;
   bool SizeGiven = false;
   bool Test = false;
-  bool Version = false;
 };
 
-std::string Usage()
+/**
+ * Parses argv into @p o (CLI11 through ScattererCommandLine, as scatterer-render).
+ * Returns ContinueRun, or the exit status once --help, --version or a usage error
+ * has been printed.
+ */
+int ParseArgs(int argc, char* argv[], Options& o)
 {
-  return "Usage: scatterer-viewer [options]\n"
-         "  --input PATH         volume (.mhd/.mha, .nii/.nii.gz, .vti, .nrrd, DICOM folder);\n"
-         "                       default the prepared CT head (bash scripts/prepare-data.sh)\n"
-         "  --size WxH           window size (default 600x600)\n"
-         "  --play-events FILE   play recorded interaction events ('-': the built-in recording)\n"
-         "  --record FILE        record the session's interaction events to FILE\n"
-         "  --output FILE.png    after playing the events, write the last frame and exit\n"
-         "  --test               play the built-in recording and write scatterer-viewer-test.png\n"
-         "                       at 300x300 (--play-events, --output and --size, when given,\n"
-         "                       win), and fail unless the image is lit and illumination was on\n"
-         "                       in every frame\n"
-         "  --help\n"
-         "  --version            the ScattererTemplate and VTK versions\n"
-         "Keys in the window:\n" +
-    std::string(KeyHelp) + "\n";
-}
-
-bool ParseArgs(int argc, char* argv[], Options& o, bool& help, std::string& error)
-{
-  for (int i = 1; i < argc; ++i)
-  {
-    const std::string a = argv[i];
-    auto value = [&](std::string& out) {
-      if (i + 1 >= argc)
-      {
-        error = a + " needs a value";
-        return false;
-      }
-      out = argv[++i];
-      return true;
-    };
-    if (a == "--help" || a == "-h")
-    {
-      help = true;
-    }
-    else if (a == "--version")
-    {
-      o.Version = true;
-    }
-    else if (a == "--test")
-    {
-      o.Test = true;
-    }
-    else if (a == "--input" || a == "--output" || a == "--play-events" || a == "--record")
-    {
-      std::string v;
-      if (!value(v))
-      {
-        return false;
-      }
-      (a == "--input" ? o.Input : a == "--output" ? o.Output : a == "--record" ? o.Record
-                                                                                : o.PlayEvents) = v;
-    }
-    else if (a == "--size")
-    {
-      std::string v, why;
-      if (!value(v))
-      {
-        return false;
-      }
+  CLI::App app("An interactive window on a volume with scatterer-template illumination.\n"
+               "Default input: the prepared CT head, " +
+      scatterer_examples::CtHeadPath() + "\n(made by scripts/prepare-data.sh in the source tree).",
+    "scatterer-viewer");
+  scatterer_examples::SetUpCommandLine(app);
+  app.footer("Keys in the window:\n" + std::string(KeyHelp) +
+    "\n"
+    "Every option takes --opt VALUE or --opt=VALUE, at most once (again only with the same\n"
+    "value). Refused as contradictory: --record with --output or --test (those runs end\n"
+    "after the played events: nothing to record), and --record naming the --play-events\n"
+    "file. The input files are read and checked before the display is needed.\n"
+    "Exit status: 0 ok (with --test: the image is lit and illumination was on in every\n"
+    "frame); 1 a volume or recording that cannot be read or is refused, no X display, a\n"
+    "VTK error while rendering with --output, the PNG cannot be written, or a --test check\n"
+    "failed; 2 a bad command line (usage error); 77 --test without the prepared CT head\n"
+    "(CTest: skipped).\n");
+  const auto store = [](std::string& target) {
+    return [&target](const std::string& v) { target = v; };
+  };
+  scatterer_examples::AddValueOption(app, "--input", "PATH",
+    "volume (.mhd/.mha, .nii/.nii.gz, .vti, .nrrd, DICOM folder);\n"
+    "default the prepared CT head",
+    store(o.Input));
+  scatterer_examples::AddValueOption(
+    app, "--size", "WxH", "window size, 16..8192 each (default 600x600)", [&o](const std::string& v) {
+      std::string why;
       if (!scatterer_examples::ParseSize(v, o.Width, o.Height, why))
       {
-        error = "--size '" + v + "': " + why;
-        return false;
+        scatterer_examples::ThrowUsageError("--size '" + v + "': " + why);
       }
       o.SizeGiven = true;
-    }
-    else
+    });
+  CLI::Option* play = scatterer_examples::AddValueOption(app, "--play-events", "FILE",
+    "play recorded interaction events ('-': the built-in recording)", store(o.PlayEvents));
+  CLI::Option* record = scatterer_examples::AddValueOption(
+    app, "--record", "FILE", "record the session's interaction events to FILE", store(o.Record));
+  CLI::Option* output = scatterer_examples::AddValueOption(app, "--output", "FILE.png",
+    "after playing the events, write the last frame and exit", store(o.Output));
+  scatterer_examples::AddValueOption(
+    app, "--preset", "NAME", "start with the named preset of settings", store(o.Preset));
+  CLI::Option* test = app.add_flag("--test", o.Test,
+    "play the built-in recording and write scatterer-viewer-test.png\n"
+    "at 300x300 (--play-events, --output and --size, when given,\n"
+    "win), and fail unless the image is lit and illumination was on\n"
+    "in every frame");
+  app.callback([&]() {
+    const std::string nothingToRecord =
+      "that run ends after the played events, so there is no session to record";
+    scatterer_examples::RejectTogether(record, output, nothingToRecord);
+    scatterer_examples::RejectTogether(record, test, nothingToRecord);
+    if (record->count() > 0 && play->count() > 0 && o.Record == o.PlayEvents)
     {
-      error = "unknown option '" + a + "'";
-      return false;
+      scatterer_examples::ThrowConflict("--record", "--play-events",
+        "both name '" + o.Record + "'; the recording would overwrite the events being played");
     }
-  }
-  if (o.Test)
+  });
+  const int parsed = scatterer_examples::ParseCommandLine(app, argc, argv);
+  if (parsed == scatterer_examples::ContinueRun && o.Test)
   {
     // --test fills in what was not given; an explicit --size, --output or
     // --play-events wins (a --size used to be cut to 300x300 without a word).
@@ -261,7 +251,7 @@ bool ParseArgs(int argc, char* argv[], Options& o, bool& help, std::string& erro
       o.Height = 300;
     }
   }
-  return true;
+  return parsed;
 }
 
 /** The viewer's state: the mapper, what the keys toggled, and frame statistics. */
@@ -618,23 +608,12 @@ double LitFraction(const std::string& path)
 int main(int argc, char* argv[])
 {
   Options options;
-  bool help = false;
+  const int parsed = ParseArgs(argc, argv, options);
+  if (parsed != scatterer_examples::ContinueRun)
+  {
+    return parsed; // --help, --version or a usage error, printed
+  }
   std::string error;
-  if (!ParseArgs(argc, argv, options, help, error))
-  {
-    std::cerr << "scatterer-viewer: " << error << "\nRun 'scatterer-viewer --help' for the options.\n";
-    return 2;
-  }
-  if (help)
-  {
-    std::cout << Usage();
-    return 0;
-  }
-  if (options.Version)
-  {
-    std::cout << scatterer_examples::VersionText("scatterer-viewer");
-    return 0;
-  }
   // The input files first, then the display: a missing or unusable file is the
   // user's to fix on any machine, and reading needs no display.
   std::string events;
@@ -651,7 +630,7 @@ int main(int argc, char* argv[])
     std::cerr << "scatterer-viewer: " << error << "\n";
     if (ctHead && options.Test)
     {
-      return 77; // CTest: skipped
+      return scatterer_examples::ExitSkipped; // CTest: skipped
     }
     return 1;
   }

@@ -1,7 +1,10 @@
 // Command-line options of scatterer-render, parsed and validated in one place
-// so bad arguments get one clear message and a non-zero exit.
+// (CLI11, through ScattererCommandLine; why CLI11 is said there) so bad arguments
+// get one clear message and exit status 2.
 #ifndef ScattererRenderOptions_h
 #define ScattererRenderOptions_h
+
+#include "ScattererNumbers.h" // ParseSize, FormatNumber: used with these options
 
 #include <string>
 
@@ -17,8 +20,6 @@ struct RenderOptions
   int Height = 512;
   int Frames = 1;
   bool Json = false;
-  bool Help = false;
-  bool Version = false;
 
   // Template illumination (--mode template); negative = the mapper's default.
   bool Shadows = true, Bleeding = true, Thin = true, Boundary = true, Blend = false;
@@ -28,23 +29,14 @@ struct RenderOptions
   double Radius = -1, Threshold = -1, Strength = -1, LongRange = -1, MultipleScattering = -1;
 };
 
-/** Parses argv into @p options; false with @p error set on a bad argument. */
-bool ParseRenderOptions(int argc, char* argv[], RenderOptions& options, std::string& error);
-
 /**
- * Parses a window size "WxH", each 16..8192 (plain decimal integers, as every number
- * option); false with @p why saying what is wrong. scatterer-viewer uses it too.
+ * Parses argv into @p options. Returns ContinueRun (ScattererCommandLine.h) to go on,
+ * otherwise the exit status once --help, --version or a usage error has been printed.
  */
-bool ParseSize(const std::string& text, int& width, int& height, std::string& why);
-
-/** The --help text. */
-std::string RenderUsage();
+int ParseRenderOptions(int argc, char* argv[], RenderOptions& options);
 
 /** What --version prints: "<program> <ScattererTemplate version> (VTK <version>)". */
 std::string VersionText(const std::string& program);
-
-/** A number as messages show it (printf %g). */
-std::string FormatNumber(double value);
 
 /** Escapes a string for a JSON string literal. */
 std::string JsonEscape(const std::string& text);

@@ -1,14 +1,13 @@
 // Renders the Monte Carlo reference (Module/Reference) of a VTK volume scene: the CT
-// head scene by default (shared/scenes/ct-head.json), the synthetic shell + plate scene,
-// or any volume with the automatic transfer functions. Writes the float image (.vti or
+// head scene by default (Examples/Common/ScattererCtHeadScene.cxx), the synthetic shell +
+// plate scene, or any volume with the CT head's or the automatic transfer functions. Writes the float image (.vti or
 // .mha: "Radiance" RGB + per-pixel "StandardError") and a PNG, and prints the samples
 // per pixel and the noise estimate.
 //
-//   scatterer-reference [--scene ct-head|shell-plate] [--input VOLUME] [--size WxH]
-//                       [--spp N] [--max-order N] [--seed S] [--threads N]
-//                       [--output PREFIX] [--exposure E|auto] [--quiet]
+// Run with --help for the options and the exit statuses.
 #include "ScattererReferenceScene.h"
 
+#include "Common/ScattererCommandLine.h"
 #include "Common/ScattererCtHeadScene.h"
 #include "Common/ScattererRenderOptions.h"
 #include "scatterer_reference/PathTracer.h"
@@ -19,82 +18,130 @@
 #include "vtkScattererVolumeReader.h"
 #include "vtkVolumeProperty.h"
 
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 #include <iostream>
 #include <string>
 
 namespace
 {
-const char* kUsage =
-  "usage: scatterer-reference [--scene ct-head|shell-plate] [--input VOLUME] [--size WxH]\n"
-  "         [--spp N] [--max-order N] [--seed S] [--threads N] [--output PREFIX]\n"
-  "         [--exposure E|auto] [--quiet] [--version]\n"
-  "Monte Carlo volumetric path tracing (delta tracking, NEE with ratio tracking) of the scene;\n"
-  "writes PREFIX.vti (float RGB radiance + standard error) and PREFIX.png.\n"
-  "Defaults: ct-head, 256x256, 256 spp, max order 64, seed 1, all cores, output reference,\n"
-  "exposure auto (99.5th-percentile luminance -> 1).\n";
+struct ReferenceOptions
+{
+  std::string Scene = "ct-head"; // ct-head | shell-plate | auto (auto: --input only)
+  std::string Input, Output = "reference", Exposure = "auto";
+  int Width = 256, Height = 256;
+  bool Quiet = false;
+};
+
+/** --name N: a plain decimal integer in lo..hi, as in scatterer-render. */
+CLI::Option* AddInt(CLI::App& app, const std::string& name, int lo, int hi,
+  const std::string& description, std::function<void(int)> set)
+{
+  return scatterer_examples::AddValueOption(app, name, "N", description, [=](const std::string& v) {
+    int value = 0;
+    std::string why;
+    if (!scatterer_examples::ParseInt(v, lo, hi, value, why))
+    {
+      scatterer_examples::ThrowUsageError(name + " '" + v + "': " + why);
+    }
+    set(value);
+  });
+}
+
+/** ContinueRun, or the exit status once --help, --version or a usage error is printed. */
+int ParseArgs(int argc, char* argv[], ReferenceOptions& o, scatterer_reference::RenderSettings& settings)
+{
+  CLI::App app("Monte Carlo volumetric path tracing (delta tracking, NEE with ratio tracking) of\n"
+               "the scene; writes PREFIX.vti (float RGB radiance + standard error) and PREFIX.png\n"
+               "and prints one JSON line.",
+    "scatterer-reference");
+  scatterer_examples::SetUpCommandLine(app);
+  app.footer(
+    "Numbers are plain decimal integers (as in scatterer-render); every option takes\n"
+    "--opt VALUE or --opt=VALUE, at most once (again only with the same value).\n"
+    "Refused as contradictory: --scene shell-plate with --input (a built-in volume),\n"
+    "--scene auto without --input.\n"
+    "Exit status: 0 the images were written; 1 the volume or the prepared CT head cannot\n"
+    "be read, or an image cannot be written; 2 a bad command line (usage error).\n");
+  CLI::Option* scene = scatterer_examples::AddValueOption(app, "--scene", "SCENE",
+    "ct-head (default: the prepared CT head, " + scatterer_examples::CtHeadPath() +
+      ",\nmade by scripts/prepare-data.sh in the source tree, or --input in that scene),\n"
+      "shell-plate (synthetic), or auto (--input with automatic transfer functions)",
+    [&o](const std::string& v) {
+      if (v != "ct-head" && v != "shell-plate" && v != "auto")
+      {
+        scatterer_examples::ThrowUsageError(
+          "--scene must be ct-head, shell-plate or auto, got '" + v + "'");
+      }
+      o.Scene = v;
+    });
+  CLI::Option* input = scatterer_examples::AddValueOption(app, "--input", "VOLUME",
+    "volume file or DICOM folder, in the ct-head scene or --scene auto",
+    [&o](const std::string& v) { o.Input = v; });
+  scatterer_examples::AddValueOption(
+    app, "--size", "WxH", "image size, 16..8192 each (default 256x256)", [&o](const std::string& v) {
+      std::string why;
+      if (!scatterer_examples::ParseSize(v, o.Width, o.Height, why))
+      {
+        scatterer_examples::ThrowUsageError("--size '" + v + "': " + why);
+      }
+    });
+  AddInt(app, "--spp", 1, 1000000, "samples per pixel, 1..1000000 (default 256)",
+    [&settings](int v) { settings.samplesPerPixel = v; });
+  AddInt(app, "--max-order", 1, 100000, "highest scattering order, 1..100000 (default 64)",
+    [&settings](int v) { settings.maxScatteringOrder = v; });
+  AddInt(app, "--seed", 0, 2147483647, "random seed, 0..2147483647 (default 1)",
+    [&settings](int v) { settings.seed = static_cast<std::uint64_t>(v); });
+  AddInt(app, "--threads", 0, 4096, "worker threads, 0..4096 (default 0: all cores)",
+    [&settings](int v) { settings.threads = static_cast<unsigned>(v); });
+  scatterer_examples::AddValueOption(app, "--output", "PREFIX",
+    "output prefix (default reference)", [&o](const std::string& v) { o.Output = v; });
+  scatterer_examples::AddValueOption(app, "--exposure", "E|auto",
+    "PNG exposure > 0, or auto (default: 99.5th-percentile luminance -> 1)",
+    [&o](const std::string& v) {
+      double e = 0.0;
+      std::string why;
+      if (v != "auto" && !scatterer_examples::ParseDouble(v, 1e-9, 1e9, e, why))
+      {
+        scatterer_examples::ThrowUsageError("--exposure '" + v + "': " + why + " (or auto)");
+      }
+      o.Exposure = v;
+    });
+  app.add_flag("--quiet", o.Quiet, "no progress on stderr");
+  app.callback([&]() {
+    if (o.Scene == "shell-plate" && input->count() > 0)
+    {
+      scatterer_examples::ThrowConflict("--scene shell-plate", "--input",
+        "shell-plate is a built-in volume; for a file use --scene ct-head or auto");
+    }
+    if (o.Scene == "auto" && scene->count() > 0 && input->count() == 0)
+    {
+      scatterer_examples::ThrowUsageError(
+        "--scene auto needs --input: it lays transfer functions over a given volume");
+    }
+  });
+  return scatterer_examples::ParseCommandLine(app, argc, argv);
+}
 }
 
 int main(int argc, char* argv[])
 {
-  std::string sceneName = "ct-head", input, output = "reference", exposureArg = "auto";
-  int width = 256, height = 256;
+  ReferenceOptions options;
   scatterer_reference::RenderSettings settings;
   settings.samplesPerPixel = 256;
-  bool quiet = false;
-  for (int i = 1; i < argc; ++i)
+  const int parsed = ParseArgs(argc, argv, options, settings);
+  if (parsed != scatterer_examples::ContinueRun)
   {
-    const std::string a = argv[i];
-    auto next = [&]() -> const char* { return i + 1 < argc ? argv[++i] : nullptr; };
-    const char* v = nullptr;
-    if (a == "--help" || a == "-h")
-    {
-      std::cout << kUsage;
-      return 0;
-    }
-    else if (a == "--version")
-    {
-      std::cout << scatterer_examples::VersionText("scatterer-reference");
-      return 0;
-    }
-    else if (a == "--quiet")
-      quiet = true;
-    else if (!(v = next()))
-    {
-      std::cerr << "missing value for " << a << "\n" << kUsage;
-      return 2;
-    }
-    else if (a == "--scene")
-      sceneName = v;
-    else if (a == "--input")
-      input = v;
-    else if (a == "--size")
-    {
-      if (std::sscanf(v, "%dx%d", &width, &height) != 2 || width < 1 || height < 1)
-      {
-        std::cerr << "bad --size " << v << "\n";
-        return 2;
-      }
-    }
-    else if (a == "--spp")
-      settings.samplesPerPixel = std::max(1, std::atoi(v));
-    else if (a == "--max-order")
-      settings.maxScatteringOrder = std::max(1, std::atoi(v));
-    else if (a == "--seed")
-      settings.seed = std::strtoull(v, nullptr, 10);
-    else if (a == "--threads")
-      settings.threads = static_cast<unsigned>(std::max(0, std::atoi(v)));
-    else if (a == "--output")
-      output = v;
-    else if (a == "--exposure")
-      exposureArg = v;
-    else
-    {
-      std::cerr << "unknown option " << a << "\n" << kUsage;
-      return 2;
-    }
+    return parsed; // --help, --version or a usage error, printed
   }
+  const std::string& sceneName = options.Scene;
+  const std::string& input = options.Input;
+  const std::string& output = options.Output;
+  const std::string& exposureArg = options.Exposure;
+  const int width = options.Width, height = options.Height;
+  const bool quiet = options.Quiet;
 
   scatterer_reference_vtk::VtkScene scene;
   std::string error;
@@ -104,7 +151,7 @@ int main(int argc, char* argv[])
     scene.Image = vtkScattererVolumeReader::ReadVolume(input, &error);
     if (!scene.Image)
     {
-      std::cerr << error << "\n";
+      std::cerr << "scatterer-reference: " << error << "\n";
       return 1;
     }
     scene.Property = vtkSmartPointer<vtkVolumeProperty>::New();
@@ -126,7 +173,7 @@ int main(int argc, char* argv[])
     int exitCode = 0;
     if (!scatterer_reference_vtk::MakeNamedScene(sceneName, scene, error, exitCode))
     {
-      std::cerr << error << "\n";
+      std::cerr << "scatterer-reference: " << error << "\n";
       return exitCode;
     }
   }
@@ -146,14 +193,14 @@ int main(int argc, char* argv[])
   const std::string floatPath = output + ".vti";
   if (!scatterer_reference_vtk::WriteFloatImage(image, floatPath))
   {
-    std::cerr << "cannot write " << floatPath << "\n";
+    std::cerr << "scatterer-reference: cannot write " << floatPath << "\n";
     return 1;
   }
   const double exposure =
     exposureArg == "auto" ? scatterer_reference_vtk::AutoExposure(r.rgb) : std::atof(exposureArg.c_str());
   if (!scatterer_reference_vtk::WritePng(r.rgb, r.width, r.height, exposure, output + ".png"))
   {
-    std::cerr << "cannot write " << output << ".png\n";
+    std::cerr << "scatterer-reference: cannot write " << output << ".png\n";
     return 1;
   }
   std::printf("{\"scene\": \"%s\", \"width\": %d, \"height\": %d, \"samples_per_pixel\": %d, "

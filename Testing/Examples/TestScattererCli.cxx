@@ -1,5 +1,6 @@
 // Command-line tests of scatterer-render and scatterer-viewer (issue 13: bad input
-// never crashes and never yields a silent black frame). Each test writes its input
+// never crashes and never yields a silent black frame; issue 16: the command lines
+// themselves, on CLI11). Each test writes its input
 // volume into a fresh temporary folder (MetaImage or NRRD, written by hand so that
 // any spacing or origin can be put in the header), runs the built program and checks
 // the exit status, the message and, where an image is expected, the image.
@@ -7,6 +8,7 @@
 // The rules themselves are also tested in-process (VolumeCheck.*): for files, the
 // volume reader refuses bad spacing and origin before the programs' own check sees
 // them, so only the in-process tests show that check working.
+#include "Common/ScattererCtHeadScene.h"
 #include "Common/ScattererFrameCheck.h"
 #include "Common/ScattererVolumeCheck.h"
 
@@ -22,6 +24,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -37,6 +40,9 @@
 #endif
 #ifndef SCATTERER_VIEWER_EXE
 #error "SCATTERER_VIEWER_EXE (path of scatterer-viewer) must be defined by the build"
+#endif
+#ifndef SCATTERER_SOURCE_DIR
+#error "SCATTERER_SOURCE_DIR (the source tree, for paths the help cites) must be defined by the build"
 #endif
 
 namespace fs = std::filesystem;
@@ -583,6 +589,185 @@ TEST_F(Cli, ViewerTestModeKeepsAnExplicitSize)
   const PngStats s = ReadPng(png);
   EXPECT_EQ(s.Width, 400) << r.Output;
   EXPECT_EQ(s.Height, 336) << r.Output;
+}
+
+// ---------------------------------------------------------------------------------------
+// The command lines (issue 16): CLI11 through Examples/Common/ScattererCommandLine.
+
+namespace
+{
+/** The programs whose command lines are tested (scatterer-reference when built). */
+std::vector<std::string> Programs()
+{
+  std::vector<std::string> programs = { SCATTERER_RENDER_EXE, SCATTERER_VIEWER_EXE };
+#ifdef SCATTERER_REFERENCE_EXE
+  programs.push_back(SCATTERER_REFERENCE_EXE);
+#endif
+  return programs;
+}
+
+std::string ProgramName(const std::string& path)
+{
+  return fs::path(path).filename().string();
+}
+
+/** Exit status 2, "<program>: " before the message, each of @p parts in it, the --help hint. */
+void ExpectUsageError(const Result& r, const std::string& program, const std::vector<std::string>& parts)
+{
+  const std::string name = ProgramName(program);
+  EXPECT_EQ(r.Status, 2) << name << ":\n" << r.Output;
+  EXPECT_EQ(r.Output.rfind(name + ": ", 0), 0u) << r.Output;
+  for (const auto& part : parts)
+  {
+    EXPECT_TRUE(Contains(r.Output, part)) << name << ": the message should say '" << part << "':\n"
+                                          << r.Output;
+  }
+  EXPECT_TRUE(Contains(r.Output, "Run '" + name + " --help' for the options.")) << r.Output;
+}
+}
+
+// --opt=value means what --opt value means, in both programs.
+TEST_F(Cli, OptionEqualsValueIsAccepted)
+{
+  const std::string input = this->WriteMetaImage("ball", Ball());
+  const std::string renderPng = this->Png("render-equals.png");
+  const Result render = Render({ "--input=" + input, "--size=96x96", "--frames=1",
+    "--mode=template", "--output=" + renderPng });
+  EXPECT_EQ(render.Status, 0) << render.Output;
+  EXPECT_GT(ReadPng(renderPng).Lit, 400) << render.Output;
+
+  const std::string viewerPng = this->Png("viewer-equals.png");
+  const Result viewer = RunProgram(SCATTERER_VIEWER_EXE,
+    { "--input=" + input, "--play-events=" + this->WriteDragRecording(), "--size=96x80",
+      "--preset=any-name", "--output=" + viewerPng });
+  EXPECT_EQ(viewer.Status, 0) << viewer.Output;
+  const PngStats s = ReadPng(viewerPng);
+  EXPECT_EQ(s.Width, 96) << viewer.Output;
+  EXPECT_EQ(s.Height, 80) << viewer.Output;
+}
+
+// Options that contradict each other (one would be silently ignored or overridden)
+// are refused with exit status 2 and a message naming both. The input is missing and
+// there is no display: should a case wrongly pass, the run ends at once with status 1.
+TEST_F(Cli, ConflictingOptionsAreRefused)
+{
+  struct Case
+  {
+    std::string Program;
+    std::vector<std::string> Args;
+    std::vector<std::string> Named;
+  };
+  const std::string missing = (this->Dir / "missing.mhd").string();
+  const std::string log = (this->Dir / "session.log").string();
+  const Case cases[] = {
+    { SCATTERER_RENDER_EXE, { "--mode", "stock", "--photons", "8" }, { "--photons", "--mode stock" } },
+    { SCATTERER_RENDER_EXE, { "--mode=phong", "--illumination=per-sample" },
+      { "--illumination", "--mode phong" } },
+    { SCATTERER_RENDER_EXE, { "--interval", "4" }, { "--interval", "--illumination transport" } },
+    { SCATTERER_RENDER_EXE, { "--illumination", "per-sample", "--transport-scale", "2" },
+      { "--transport-scale", "--illumination per-sample" } },
+    { SCATTERER_RENDER_EXE, { "--frames", "3", "--frames=4" }, { "--frames", "'3'", "'4'" } },
+    { SCATTERER_VIEWER_EXE, { "--record", log, "--output", this->Png("v.png") },
+      { "--record", "--output" } },
+    { SCATTERER_VIEWER_EXE, { "--test", "--record", log }, { "--record", "--test" } },
+    { SCATTERER_VIEWER_EXE, { "--record", log, "--play-events", log },
+      { "--record", "--play-events" } },
+    { SCATTERER_VIEWER_EXE, { "--size", "96x96", "--size", "128x128" }, { "--size", "'96x96'" } },
+  };
+  for (const auto& c : cases)
+  {
+    std::vector<std::string> args = c.Args;
+    args.insert(args.end(), { "--input", missing });
+    ExpectUsageError(RunProgram(c.Program, args, "env -u DISPLAY"), c.Program, c.Named);
+  }
+  // --scene auto would be ignored for the CT head (no --input).
+  ExpectUsageError(RunProgram(SCATTERER_RENDER_EXE, { "--scene", "auto" }, "env -u DISPLAY"),
+    SCATTERER_RENDER_EXE, { "--scene auto", "--input" });
+  // The same value twice is not a contradiction.
+  const Result same = RunProgram(
+    SCATTERER_RENDER_EXE, { "--frames", "3", "--frames=3", "--input", missing }, "env -u DISPLAY");
+  EXPECT_EQ(same.Status, 1) << same.Output;
+  EXPECT_TRUE(Contains(same.Output, "no such file")) << same.Output;
+}
+
+TEST_F(Cli, UnknownOptionIsAUsageError)
+{
+  for (const std::string& program : Programs())
+  {
+    ExpectUsageError(RunProgram(program, { "--no-such-option" }), program,
+      { "unknown argument '--no-such-option'" });
+  }
+}
+
+TEST_F(Cli, MissingValueIsAUsageError)
+{
+  for (const std::string& program : Programs())
+  {
+    ExpectUsageError(RunProgram(program, { "--size" }), program, { "option --size needs a value" });
+    ExpectUsageError(
+      RunProgram(program, { "--output=" }), program, { "option --output needs a value" });
+  }
+}
+
+// --help exits 0 and documents every exit status the program uses.
+TEST_F(Cli, HelpExitsZeroAndListsTheExitStatuses)
+{
+  for (const std::string& program : Programs())
+  {
+    const Result r = RunProgram(program, { "--help" });
+    EXPECT_EQ(r.Status, 0) << r.Output;
+    for (const char* part : { "Exit status: 0 ", "; 1 ", "; 2 a bad command line", "--opt=VALUE" })
+    {
+      EXPECT_TRUE(Contains(r.Output, part)) << ProgramName(program) << " --help should say '"
+                                            << part << "':\n" << r.Output;
+    }
+  }
+  EXPECT_TRUE(Contains(RunProgram(SCATTERER_VIEWER_EXE, { "--help" }).Output, "77 --test without"));
+}
+
+// Every file path the help cites is one the user has: in the source tree (relative
+// paths) or the prepared CT head's place. Path-like words: a '/' and a file name with
+// an extension ("transport/per-sample" and ".mhd/.mha" are not paths).
+TEST_F(Cli, HelpCitesOnlyPathsTheUserHas)
+{
+  for (const std::string& program : Programs())
+  {
+    const Result r = RunProgram(program, { "--help" });
+    std::vector<std::string> paths;
+    std::string word;
+    const auto take = [&]() {
+      while (!word.empty() && std::string("(),;:'\".").find(word.back()) != std::string::npos)
+        word.pop_back();
+      while (!word.empty() && std::string("(,;:'\"").find(word.front()) != std::string::npos)
+        word.erase(0, 1);
+      const fs::path p(word);
+      bool dotted = false;
+      for (const auto& part : p)
+        dotted = dotted || (!part.empty() && part.string()[0] == '.' && part != "." && part != "..");
+      if (word.find('/') != std::string::npos && word.rfind("--", 0) != 0 &&
+        p.filename().has_extension() && (p.is_absolute() || !dotted))
+        paths.push_back(word);
+      word.clear();
+    };
+    for (const char c : r.Output)
+    {
+      if (std::isspace(static_cast<unsigned char>(c)))
+        take();
+      else
+        word += c;
+    }
+    take();
+    EXPECT_FALSE(paths.empty()) << ProgramName(program) << " --help cites no path at all:\n"
+                                << r.Output;
+    for (const std::string& path : paths)
+    {
+      const bool has = fs::path(path).is_absolute()
+        ? path == scatterer_examples::CtHeadPath() || fs::exists(path)
+        : fs::exists(fs::path(SCATTERER_SOURCE_DIR) / path);
+      EXPECT_TRUE(has) << ProgramName(program) << " --help cites '" << path
+                       << "', which is neither in the source tree nor the CT head's place";
+    }
+  }
 }
 
 // ---------------------------------------------------------------------------------------
