@@ -26,6 +26,7 @@
 #include "Common/ScattererFrameCheck.h"
 #include "Common/ScattererRenderOptions.h"
 #include "Common/ScattererScreenshot.h"
+#include "Common/ScattererTransferPresets.h"
 #include "Common/ScattererVolumeCheck.h"
 #include "viewer/ScattererViewerOverlay.h"
 #include "viewer/ScattererViewerTransfer.h"
@@ -162,7 +163,7 @@ struct Options
   std::string Output;
   std::string PlayEvents;
   std::string Record;
-  std::string Preset; // --preset NAME; empty: none (the name is checked where presets are applied)
+  std::string Preset; // --preset NAME (checked while parsing); empty: chosen from the data
   int Width = 600;
   int Height = 600;
   bool SizeGiven = false;
@@ -187,8 +188,7 @@ int ParseArgs(int argc, char* argv[], Options& o)
     "value). Refused as contradictory: --record with --output or --test (those runs end\n"
     "after the played events: nothing to record), and --record naming the --play-events\n"
     "file. The input files are read and checked before the display is needed.\n"
-    "Exit status: 0 ok (with --test: the image is lit and illumination was on in every\n"
-    "frame); 1 a volume or recording that cannot be read or is refused, no X display, a\n"
+    "Exit status: 0 ok (with --test: every --test check passed); 1 a volume or recording that cannot be read or is refused, no X display, a\n"
     "VTK error while rendering with --output, the PNG cannot be written, or a --test check\n"
     "failed; 2 a bad command line (usage error); 77 --test without the prepared CT head\n"
     "(CTest: skipped).\n");
@@ -196,8 +196,8 @@ int ParseArgs(int argc, char* argv[], Options& o)
     return [&target](const std::string& v) { target = v; };
   };
   scatterer_examples::AddValueOption(app, "--input", "PATH",
-    "volume (.mhd/.mha, .nii/.nii.gz, .vti, .nrrd, DICOM folder);\n"
-    "default the prepared CT head",
+    "volume (.mhd/.mha, .nii/.nii.gz, .vti, .nrrd/.nhdr, a DICOM folder\n"
+    "or one file of a DICOM series); default the prepared CT head",
     store(o.Input));
   scatterer_examples::AddValueOption(
     app, "--size", "WxH", "window size, 16..8192 each (default 600x600)", [&o](const std::string& v) {
@@ -214,13 +214,29 @@ int ParseArgs(int argc, char* argv[], Options& o)
     app, "--record", "FILE", "record the session's interaction events to FILE", store(o.Record));
   CLI::Option* output = scatterer_examples::AddValueOption(app, "--output", "FILE.png",
     "after playing the events, write the last frame and exit", store(o.Output));
-  scatterer_examples::AddValueOption(
-    app, "--preset", "NAME", "start with the named preset of settings", store(o.Preset));
+  scatterer_examples::AddValueOption(app, "--preset", "NAME",
+    "transfer-function preset to start with (p cycles them in the window);\n"
+    "default: ct-head for CT in Hounsfield units, auto otherwise\n" +
+      scatterer_examples::TransferPresetHelp(),
+    [&o](const std::string& v) {
+      const auto& names = scatterer_examples::TransferPresetNames();
+      if (std::find(names.begin(), names.end(), v) == names.end())
+      {
+        std::string known;
+        for (const std::string& name : names)
+        {
+          known += " " + name;
+        }
+        scatterer_examples::ThrowUsageError("--preset '" + v + "': no such preset (known:" + known + ")");
+      }
+      o.Preset = v;
+    });
   CLI::Option* test = app.add_flag("--test", o.Test,
     "play the built-in recording and write scatterer-viewer-test.png\n"
     "at 300x300 (--play-events, --output and --size, when given,\n"
-    "win), and fail unless the image is lit and illumination was on\n"
-    "in every frame");
+    "win), and fail unless the image is lit, illumination was on\n"
+    "in every frame and drag frames cast at most half the rays of\n"
+    "still frames (the level of detail)");
   app.callback([&]() {
     const std::string nothingToRecord =
       "that run ends after the played events, so there is no session to record";
@@ -689,8 +705,9 @@ int main(int argc, char* argv[])
   // The transfer function: the scene's for the CT head, else the one the histogram
   // suggests (ct-head for CT in Hounsfield units, auto otherwise).
   scatterer_viewer::ViewerTransfer transfer(image, property);
-  const std::string preset = ctHead ? "ct-head"
-                                    : scatterer_examples::DefaultTransferPreset(
+  const std::string preset = !options.Preset.empty() ? options.Preset
+    : ctHead                                          ? "ct-head"
+                                                      : scatterer_examples::DefaultTransferPreset(
                                         scatterer_examples::VolumeHistogram(image));
   transfer.Select(preset, error);
 
@@ -791,8 +808,9 @@ int main(int argc, char* argv[])
   const double stillRays = Median(viewer.StillRays);
   const double dragRays = Median(viewer.InteractiveRays);
   std::printf("scatterer-viewer: median still frame %.0f ms, %.0f rays; median drag frame %.0f ms,"
-              " %.0f rays\n",
-    Median(viewer.StillMs), stillRays, Median(viewer.InteractiveMs), dragRays);
+              " %.0f rays; transfer function %s\n",
+    Median(viewer.StillMs), stillRays, Median(viewer.InteractiveMs), dragRays,
+    transfer.Describe().c_str());
   if (options.Test)
   {
     bool ok = true;

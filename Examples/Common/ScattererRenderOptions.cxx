@@ -122,7 +122,7 @@ int ParseRenderOptions(int argc, char* argv[], RenderOptions& o)
   app.footer(Footer);
 
   CLI::Option* input = AddValueOption(app, "--input", "PATH",
-    "volume: .mhd/.mha, .nii/.nii.gz, .vti, .nrrd/.nhdr or a DICOM folder\n"
+    "volume: .mhd/.mha, .nii/.nii.gz, .vti, .nrrd/.nhdr, a DICOM folder or one file of a series\n"
     "(default: the prepared CT head)",
     [&o](const std::string& v) { o.Input = v; });
   AddValueOption(app, "--output", "FILE.png", "image to write (default ct-head.png)",

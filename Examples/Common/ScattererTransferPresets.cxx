@@ -174,7 +174,8 @@ std::string TransferPresetHelp()
   std::ostringstream out;
   for (const PresetInfo& p : Presets)
   {
-    out << "  " << p.Name << std::string(16 - std::string(p.Name).size(), ' ') << p.Shows << "\n";
+    out << (&p == Presets ? "" : "\n") << "  " << p.Name
+        << std::string(16 - std::string(p.Name).size(), ' ') << p.Shows;
   }
   return out.str();
 }

@@ -53,7 +53,7 @@ private:
 /** The preset names, in the order the viewer's p key cycles through them. */
 const std::vector<std::string>& TransferPresetNames();
 
-/** One line per preset for --help: "name  what it shows". */
+/** One line per preset for --help: "  name  what it shows", no final line end. */
 std::string TransferPresetHelp();
 
 /**

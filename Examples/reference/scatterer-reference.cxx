@@ -78,7 +78,7 @@ int ParseArgs(int argc, char* argv[], ReferenceOptions& o, scatterer_reference::
       o.Scene = v;
     });
   CLI::Option* input = scatterer_examples::AddValueOption(app, "--input", "VOLUME",
-    "volume file or DICOM folder, in the ct-head scene or --scene auto",
+    "volume file, DICOM folder or one file of a DICOM series, in the ct-head scene or --scene auto",
     [&o](const std::string& v) { o.Input = v; });
   scatterer_examples::AddValueOption(
     app, "--size", "WxH", "image size, 16..8192 each (default 256x256)", [&o](const std::string& v) {

@@ -6,6 +6,7 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkScattererTemplateVolumeMapper.h"
+#include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
@@ -13,12 +14,26 @@
 
 namespace scatterer_testing
 {
+namespace
+{
+// One window for the whole program: opening X connections one after another under
+// Xvfb sometimes fails ("bad X server connection", and VTK aborts).
+vtkRenderWindow* SharedWindow()
+{
+  static vtkSmartPointer<vtkRenderWindow> window = [] {
+    auto w = vtkSmartPointer<vtkRenderWindow>::New();
+    w->SetMultiSamples(0);
+    w->OffScreenRenderingOn();
+    return w;
+  }();
+  return window;
+}
+}
+
 std::vector<unsigned char> RenderRgb(vtkImageData* image, const SceneSetup& setup, int size)
 {
-  vtkNew<vtkRenderWindow> window;
+  vtkRenderWindow* window = SharedWindow();
   window->SetSize(size, size);
-  window->SetMultiSamples(0);
-  window->OffScreenRenderingOn();
   vtkNew<vtkRenderer> renderer;
   window->AddRenderer(renderer);
   vtkNew<vtkScattererTemplateVolumeMapper> mapper;
@@ -37,6 +52,7 @@ std::vector<unsigned char> RenderRgb(vtkImageData* image, const SceneSetup& setu
   auto* pixels = vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
   std::vector<unsigned char> rgb(pixels->GetPointer(0), pixels->GetPointer(0) + pixels->GetNumberOfValues());
   mapper->ReleaseGraphicsResources(window);
+  window->RemoveRenderer(renderer);
   return rgb;
 }
 }

@@ -639,11 +639,21 @@ TEST_F(Cli, OptionEqualsValueIsAccepted)
   const std::string viewerPng = this->Png("viewer-equals.png");
   const Result viewer = RunProgram(SCATTERER_VIEWER_EXE,
     { "--input=" + input, "--play-events=" + this->WriteDragRecording(), "--size=96x80",
-      "--preset=any-name", "--output=" + viewerPng });
+      "--preset=ct-bone", "--output=" + viewerPng });
   EXPECT_EQ(viewer.Status, 0) << viewer.Output;
+  EXPECT_TRUE(Contains(viewer.Output, "transfer function ct-bone")) << viewer.Output;
   const PngStats s = ReadPng(viewerPng);
   EXPECT_EQ(s.Width, 96) << viewer.Output;
   EXPECT_EQ(s.Height, 80) << viewer.Output;
+}
+
+// An unknown preset is a usage error that lists the known ones, before any file is read.
+TEST_F(Cli, ViewerUnknownPresetIsAUsageError)
+{
+  const Result r = RunProgram(SCATTERER_VIEWER_EXE, { "--preset", "bones", "--input", "/nonexistent.mhd" });
+  EXPECT_EQ(r.Status, 2) << r.Output;
+  EXPECT_TRUE(Contains(r.Output, "'bones'")) << r.Output;
+  EXPECT_TRUE(Contains(r.Output, "ct-bone")) << r.Output;
 }
 
 // Options that contradict each other (one would be silently ignored or overridden)
