@@ -647,6 +647,49 @@ TEST_F(Cli, OptionEqualsValueIsAccepted)
   EXPECT_EQ(s.Height, 80) << viewer.Output;
 }
 
+// The viewer's transfer-function keys and mouse: p (next preset), ] (level up), } (window
+// wider), ctrl + left drag (window/level), w (screenshot into the working folder).
+TEST_F(Cli, ViewerPresetWindowLevelAndScreenshotKeys)
+{
+  const std::string input = this->WriteMetaImage("ball", Ball());
+  const fs::path events = this->Dir / "keys.log";
+  auto key = [](int code, const char* sym) {
+    std::string k;
+    for (const char* e : { "KeyPressEvent", "CharEvent", "KeyReleaseEvent" })
+    {
+      k += std::string(e) + " 48 40 0 " + std::to_string(code) + " 1 " + sym + "\n";
+    }
+    return k;
+  };
+  // Modifiers 2 = control. The drag: 12 pixels right (level +12.5 % of the range) and
+  // 10 down (window x e^(2 * -10 / 80) = 0.78).
+  std::ofstream(events) << "# StreamVersion 1.1\nEnterEvent 48 40 0 0 0 0\n"
+                        << key(112, "p") << key(93, "bracketright") << key(93, "bracketright")
+                        << key(125, "braceright")
+                        << "MouseMoveEvent 48 40 2 0 0 0\n"
+                           "LeftButtonPressEvent 48 40 2 0 0 0\n"
+                           "MouseMoveEvent 54 35 2 0 0 0\n"
+                           "MouseMoveEvent 60 30 2 0 0 0\n"
+                           "LeftButtonReleaseEvent 60 30 2 0 0 0\n"
+                        << key(119, "w");
+  const std::string png = this->Png("keys.png");
+  const Result r = RunProgram(SCATTERER_VIEWER_EXE,
+    { "--input", input, "--play-events", events.string(), "--size", "96x80", "--output", png },
+    "cd " + Quote(this->Dir.string()) + " &&");
+  ASSERT_EQ(r.Status, 0) << r.Output;
+  // The ball is not CT: it opens with "auto"; p moves on to "ct-head".
+  const size_t at = r.Output.find("transfer function ct-head  level ");
+  ASSERT_NE(at, std::string::npos) << r.Output;
+  double level = 0.0, window = 0.0;
+  ASSERT_EQ(std::sscanf(r.Output.c_str() + at, "transfer function ct-head level %lf window x%lf",
+              &level, &window), 2) << r.Output;
+  const double range = 100.0; // the ball's values: 0..100 (about)
+  EXPECT_NEAR(level, (0.02 + 0.02 + 12.0 / 96.0) * range, 0.05 * range) << r.Output;
+  EXPECT_NEAR(window, 1.25 * std::exp(2.0 * -10.0 / 80.0), 0.05) << r.Output;
+  EXPECT_TRUE(Contains(r.Output, "saved scatterer-viewer-1.png")) << r.Output;
+  EXPECT_EQ(ReadPng((this->Dir / "scatterer-viewer-1.png").string()).Width, 96) << r.Output;
+}
+
 // An unknown preset is a usage error that lists the known ones, before any file is read.
 TEST_F(Cli, ViewerUnknownPresetIsAUsageError)
 {
