@@ -332,11 +332,13 @@ struct Viewer
         effects += effects.empty() ? name : std::string(" ") + name;
       }
     };
-    add(m->GetShadowsEnabled(), "shadow");
-    add(m->GetColorBleedingEnabled(), "bleed");
-    add(m->GetThinPartCheckEnabled(), "thin");
-    add(m->GetBoundaryRefractionEnabled(), "boundary");
-    add(m->GetTemplateBlendingEnabled(), "blend");
+    // The effects the last frame's shader used (the mapper simulates only what the
+    // scene calls for, and transport mode has no thin-part check or blending).
+    const std::string& used = this->LastFeatures;
+    for (const char* name : { "shadow", "bleed", "thin", "boundary", "blend" })
+    {
+      add((" " + used + " ").find(std::string(" ") + name + " ") != std::string::npos, name);
+    }
     char text[512];
     std::snprintf(text, sizeof(text), "%.0f ms %s  %s  quality %s\n%s\n%s",
       this->LastFrameMs, this->Interactive ? "drag" : "still",
@@ -351,6 +353,15 @@ struct Viewer
   }
 
   void UpdateText() { this->Overlay->SetStatus(this->Describe()); }
+
+  /** In transport mode, says that a per-sample effect's key changes nothing yet. */
+  void SayPerSampleOnly(const char* effect, bool on)
+  {
+    if (this->Mapper->GetIlluminationMode() == vtkScattererTemplateVolumeMapper::TRANSPORT)
+    {
+      this->LastMessage = std::string(effect) + (on ? " on" : " off") + ": per-sample mode only (m)";
+    }
+  }
 
   /** Writes the window to the first free scatterer-viewer-N.png in the working folder. */
   void Screenshot()
@@ -384,12 +395,14 @@ struct Viewer
         break;
       case 't':
         m->SetThinPartCheckEnabled(!m->GetThinPartCheckEnabled());
+        this->SayPerSampleOnly("thin-part check", m->GetThinPartCheckEnabled());
         break;
       case 'r':
         m->SetBoundaryRefractionEnabled(!m->GetBoundaryRefractionEnabled());
         break;
       case 'l':
         m->SetTemplateBlendingEnabled(!m->GetTemplateBlendingEnabled());
+        this->SayPerSampleOnly("blending", m->GetTemplateBlendingEnabled());
         break;
       case 'i':
         m->SetIlluminationEnabled(!m->GetIlluminationEnabled());
