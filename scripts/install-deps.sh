@@ -7,6 +7,7 @@ packages=(
   build-essential cmake git                       # toolchain
   libvtk9-dev libglm-dev                          # VTK 9.1 (X11/GLX), GLM
   libvtk-dicom-dev                                # vtk-dicom 0.8 for VTK 9.1: DICOM reading (GDCM codecs)
+  libgdcm-tools                                   # gdcmconv: the tests' JPEG / JPEG-LS / JPEG 2000 series
   libcli11-dev                                    # CLI11: the programs' command-line parser
   python3-vtk9                                    # VTK's Python (wrapping, Python tests/example)
   libgtest-dev libbenchmark-dev                   # GoogleTest, Google Benchmark

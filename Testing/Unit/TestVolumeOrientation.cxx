@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -346,6 +347,32 @@ TEST_F(VolumeOrientationTest, RleCompressedDicomSeriesReads)
     return spec;
   });
   ExpectPlaced(Read(Path("rle")), SagittalWorld);
+}
+
+// JPEG lossless, JPEG-LS and JPEG 2000 (lossless) series, made from the uncompressed one
+// by GDCM's gdcmconv (Debian libgdcm-tools; scripts/install-deps.sh): every voxel comes
+// back with its value and place. This is the "JPEG-lossless series" that VTK's own
+// DICOM reader could not read.
+TEST_F(VolumeOrientationTest, CompressedDicomSeriesRead)
+{
+  if (!HasVtkDicom())
+    GTEST_SKIP() << vtkScattererVolumeReader::GetDicomSupport();
+  if (!fs::exists("/usr/bin/gdcmconv"))
+    GTEST_SKIP() << "gdcmconv is missing (apt-get install libgdcm-tools)";
+  WriteSagittalSeries(Path("plain"), Sagittal);
+  for (const char* codec : { "--jpeg", "--jpegls", "--j2k" })
+  {
+    const std::string folder = Path(std::string("series") + codec);
+    fs::create_directories(folder);
+    for (const auto& file : fs::directory_iterator(Path("plain")))
+    {
+      const std::string command = std::string("gdcmconv ") + codec + " '" + file.path().string() +
+        "' '" + folder + "/" + file.path().filename().string() + "'";
+      ASSERT_EQ(std::system(command.c_str()), 0) << command;
+    }
+    SCOPED_TRACE(codec);
+    ExpectPlaced(Read(folder), SagittalWorld);
+  }
 }
 
 // A transfer syntax nothing here decodes (MPEG-2 video) fails in one line.
