@@ -124,7 +124,8 @@ struct QualityStep
 const QualityStep QualitySteps[] = {
   { "draft", 4, 8, 8 },
   { "low", 3, 16, 6 },
-  { "default", 2, 24, 4 },
+  { "default", scatterer::illumination::TransportScale.Default, scatterer::illumination::PhotonCap.Default,
+    scatterer::illumination::IlluminationInterval.Default },
   { "high", 1, 48, 2 },
   { "best", 1, 96, 1 },
 };

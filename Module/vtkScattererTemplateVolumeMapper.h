@@ -49,6 +49,8 @@
 #include "vtkOpenGLGPUVolumeRayCastMapper.h"
 #include "vtkTimeStamp.h" // for IlluminationTime
 
+#include "scatterer/IlluminationSettings.h" // for the settings' defaults and ranges
+
 #include <memory> // for Internals
 #include <string> // for GetLastShaderFeatures
 
@@ -78,6 +80,14 @@
   }                                                                                                \
   virtual type Get##name##MinValue() { return min; }                                               \
   virtual type Get##name##MaxValue() { return max; }
+
+/**
+ * vtkScattererSetClampMacro with the range of the setting of the same name in
+ * scatterer/IlluminationSettings.h, where every default and range is written once.
+ */
+#define vtkScattererSetSettingMacro(name, type)                                                    \
+  vtkScattererSetClampMacro(name, type, scatterer::illumination::name.Minimum,                     \
+    scatterer::illumination::name.Maximum)
 
 /** A boolean switch without Modified() (see the class comment). */
 #define vtkScattererSetSwitchMacro(name)                                                           \
@@ -123,8 +133,8 @@ public:
 
   enum IlluminationModeType
   {
-    TRANSPORT = 0, ///< light transport volume built on the GPU, read by every sample (default)
-    PER_SAMPLE = 1 ///< the paper's local photon test in the fragment shader at every ray sample
+    TRANSPORT = scatterer::illumination::Transport, ///< light transport volume built on the GPU, read by every sample (default)
+    PER_SAMPLE = scatterer::illumination::PerSample ///< the paper's local photon test in the fragment shader at every ray sample
   };
   ///@{
   /**
@@ -136,7 +146,7 @@ public:
    * intensity; it sees occluders within the template radius only (times
    * LongRangeMultiple along the thin-part check).
    */
-  vtkScattererSetClampMacro(IlluminationMode, int, TRANSPORT, PER_SAMPLE);
+  vtkScattererSetSettingMacro(IlluminationMode, int);
   vtkGetMacro(IlluminationMode, int);
   void SetIlluminationModeToTransport() { this->SetIlluminationMode(TRANSPORT); }
   void SetIlluminationModeToPerSample() { this->SetIlluminationMode(PER_SAMPLE); }
@@ -151,9 +161,9 @@ public:
    * depends on changed (orbiting under a scene light), interactive frames keep the
    * still frames' volume. Smaller is sharper and slower.
    */
-  vtkScattererSetClampMacro(TransportScale, int, 1, 8);
+  vtkScattererSetSettingMacro(TransportScale, int);
   vtkGetMacro(TransportScale, int);
-  vtkScattererSetClampMacro(InteractiveTransportScale, int, 1, 8);
+  vtkScattererSetSettingMacro(InteractiveTransportScale, int);
   vtkGetMacro(InteractiveTransportScale, int);
   ///@}
 
@@ -163,7 +173,7 @@ public:
    * more than once, which reaches shadowed regions; docs/model.md). 0 leaves
    * single scattering only. Default 1.
    */
-  vtkScattererSetClampMacro(MultipleScattering, double, 0.0, 16.0);
+  vtkScattererSetSettingMacro(MultipleScattering, double);
   vtkGetMacro(MultipleScattering, double);
   ///@}
 
@@ -201,8 +211,8 @@ public:
 
   enum ShaderPathSelectionType
   {
-    AUTOMATIC = 0, ///< only the code paths the scene needs (default)
-    AS_REQUESTED = 1 ///< every switched-on effect, needed or not
+    AUTOMATIC = scatterer::illumination::Automatic, ///< only the code paths the scene needs (default)
+    AS_REQUESTED = scatterer::illumination::AsRequested ///< every switched-on effect, needed or not
   };
   ///@{
   /**
@@ -211,7 +221,7 @@ public:
    * no positional light: no positional code). AsRequested: every effect that is
    * switched on, for users who want to compare or who change scenes often.
    */
-  vtkScattererSetClampMacro(ShaderPathSelection, int, AUTOMATIC, AS_REQUESTED);
+  vtkScattererSetSettingMacro(ShaderPathSelection, int);
   vtkGetMacro(ShaderPathSelection, int);
   void SetShaderPathSelectionToAutomatic() { this->SetShaderPathSelection(AUTOMATIC); }
   void SetShaderPathSelectionToAsRequested() { this->SetShaderPathSelection(AS_REQUESTED); }
@@ -224,7 +234,7 @@ public:
    * occluders farther away). Transport: the largest in-scattering kernel (a
    * material's photons sit at its own mean free paths, up to this radius).
    */
-  vtkScattererSetClampMacro(TemplateRadius, double, 0.0, VTK_DOUBLE_MAX);
+  vtkScattererSetSettingMacro(TemplateRadius, double);
   vtkGetMacro(TemplateRadius, double);
   ///@}
 
@@ -233,7 +243,7 @@ public:
    * Templates per material (default 8). Per sample: more templates mean finer
    * grain. Transport: a material's kernel is the mean of its templates.
    */
-  vtkScattererSetClampMacro(TemplatesPerMaterial, int, 1, 64);
+  vtkScattererSetSettingMacro(TemplatesPerMaterial, int);
   vtkGetMacro(TemplatesPerMaterial, int);
   ///@}
 
@@ -243,7 +253,7 @@ public:
    * in a material's in-scattering kernel (the most intense of all its templates'
    * photons). Default 24.
    */
-  vtkScattererSetClampMacro(PhotonCap, int, 1, 1024);
+  vtkScattererSetSettingMacro(PhotonCap, int);
   vtkGetMacro(PhotonCap, int);
   ///@}
 
@@ -253,7 +263,7 @@ public:
    * occlusion off without changing the shader): at photon positions (per
    * sample), or along every light path of the transport volume.
    */
-  vtkScattererSetClampMacro(OcclusionStrength, double, 0.0, 100.0);
+  vtkScattererSetSettingMacro(OcclusionStrength, double);
   vtkGetMacro(OcclusionStrength, double);
   ///@}
 
@@ -264,7 +274,7 @@ public:
    * a ray reuses it for a few samples (always re-evaluated when the material
    * changes). The transport mode reads its light at every sample.
    */
-  vtkScattererSetClampMacro(IlluminationInterval, int, 1, 64);
+  vtkScattererSetSettingMacro(IlluminationInterval, int);
   vtkGetMacro(IlluminationInterval, int);
   ///@}
 
@@ -273,7 +283,7 @@ public:
    * Per sample: how far the thin-part check looks, in multiples of the photon
    * offset (default 3). The transport volume sees the whole volume.
    */
-  vtkScattererSetClampMacro(LongRangeMultiple, double, 1.0, 64.0);
+  vtkScattererSetSettingMacro(LongRangeMultiple, double);
   vtkGetMacro(LongRangeMultiple, double);
   ///@}
 
@@ -282,13 +292,13 @@ public:
    * Per sample: the photon loop stops once ray transmittance x photon intensity
    * falls below this (default 0.002). 0 tests every photon up to PhotonCap.
    */
-  vtkScattererSetClampMacro(PhotonThreshold, double, 0.0, 1.0);
+  vtkScattererSetSettingMacro(PhotonThreshold, double);
   vtkGetMacro(PhotonThreshold, double);
   ///@}
 
   ///@{
   /** Energy threshold of template generation (paper: 0.01; default 0.01). */
-  vtkScattererSetClampMacro(GeneratorThreshold, double, 1e-6, 0.5);
+  vtkScattererSetSettingMacro(GeneratorThreshold, double);
   vtkGetMacro(GeneratorThreshold, double);
   ///@}
 
@@ -360,26 +370,26 @@ protected:
    */
   void GPURender(vtkRenderer* ren, vtkVolume* vol) override;
 
-  bool IlluminationEnabled = true;
-  bool ShadowsEnabled = true;
-  bool ColorBleedingEnabled = true;
-  bool ThinPartCheckEnabled = true;
-  bool BoundaryRefractionEnabled = true;
-  bool TemplateBlendingEnabled = false;
-  int ShaderPathSelection = AUTOMATIC;
-  bool CroppedMatterCastsShadows = false;
-  int IlluminationMode = TRANSPORT;
-  int TransportScale = 2;
-  int InteractiveTransportScale = 4;
-  double MultipleScattering = 1.0;
-  double TemplateRadius = 0.0;
-  int TemplatesPerMaterial = 8;
-  int PhotonCap = 24;
-  double OcclusionStrength = 1.0;
-  double LongRangeMultiple = 3.0;
-  int IlluminationInterval = 4;
-  double PhotonThreshold = 0.002;
-  double GeneratorThreshold = 0.01;
+  bool IlluminationEnabled = scatterer::illumination::Illumination.Default;
+  bool ShadowsEnabled = scatterer::illumination::Shadows.Default;
+  bool ColorBleedingEnabled = scatterer::illumination::ColorBleeding.Default;
+  bool ThinPartCheckEnabled = scatterer::illumination::ThinPartCheck.Default;
+  bool BoundaryRefractionEnabled = scatterer::illumination::BoundaryRefraction.Default;
+  bool TemplateBlendingEnabled = scatterer::illumination::TemplateBlending.Default;
+  int ShaderPathSelection = scatterer::illumination::ShaderPathSelection.Default;
+  bool CroppedMatterCastsShadows = scatterer::illumination::CroppedMatterCastsShadows.Default;
+  int IlluminationMode = scatterer::illumination::IlluminationMode.Default;
+  int TransportScale = scatterer::illumination::TransportScale.Default;
+  int InteractiveTransportScale = scatterer::illumination::InteractiveTransportScale.Default;
+  double MultipleScattering = scatterer::illumination::MultipleScattering.Default;
+  double TemplateRadius = scatterer::illumination::TemplateRadius.Default;
+  int TemplatesPerMaterial = scatterer::illumination::TemplatesPerMaterial.Default;
+  int PhotonCap = scatterer::illumination::PhotonCap.Default;
+  double OcclusionStrength = scatterer::illumination::OcclusionStrength.Default;
+  double LongRangeMultiple = scatterer::illumination::LongRangeMultiple.Default;
+  int IlluminationInterval = scatterer::illumination::IlluminationInterval.Default;
+  double PhotonThreshold = scatterer::illumination::PhotonThreshold.Default;
+  double GeneratorThreshold = scatterer::illumination::GeneratorThreshold.Default;
   double MaterialDerivationRange[2] = { 1.0, 0.0 };
   vtkTimeStamp IlluminationTime;
 

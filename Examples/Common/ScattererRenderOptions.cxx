@@ -3,6 +3,7 @@
 #include "ScattererCommandLine.h"
 #include "ScattererCtHeadScene.h"
 
+#include "scatterer/IlluminationSettings.h"
 #include "vtkScattererTemplateVersion.h"
 #include "vtkVersion.h"
 
@@ -55,6 +56,15 @@ CLI::Option* AddChoice(CLI::App& app, const std::string& name, const std::string
     });
 }
 
+CLI::Option* AddOnOff(CLI::App& app, const std::string& name, const std::string& description, bool& target);
+
+/** --name on|off for a switch of the mapper: its default from the record. */
+CLI::Option* AddSwitch(CLI::App& app, const std::string& name,
+  const scatterer::illumination::Switch& setting, const std::string& what, bool& target)
+{
+  return AddOnOff(app, name, what + " (default " + (setting.Default ? "on" : "off") + ")", target);
+}
+
 CLI::Option* AddOnOff(CLI::App& app, const std::string& name, const std::string& description, bool& target)
 {
   return AddValueOption(app, name, "on|off", description, [name, &target](const std::string& v) {
@@ -87,6 +97,29 @@ CLI::Option* AddDouble(CLI::App& app, const std::string& name, const std::string
       BadValue(name, v, why);
     }
   });
+}
+
+/** The help text of a mapper setting: @p what, then a line "lo..hi (default d)" from the record. */
+template <typename T>
+std::string SettingHelp(const std::string& what, const scatterer::illumination::Setting<T>& setting)
+{
+  return what + "\n" + FormatNumber(setting.Minimum) + ".." + FormatNumber(setting.Maximum) +
+    " (default " + FormatNumber(setting.Default) + ")";
+}
+
+/** --name N for an integer setting of the mapper: its range and default from the record. */
+CLI::Option* AddSetting(CLI::App& app, const std::string& name, const std::string& valueName,
+  const scatterer::illumination::Setting<int>& setting, const std::string& what, int& target)
+{
+  return AddInt(app, name, valueName, setting.Minimum, setting.Maximum, SettingHelp(what, setting), target);
+}
+
+/** --name X for a real setting of the mapper: its range and default from the record. */
+CLI::Option* AddSetting(CLI::App& app, const std::string& name, const std::string& valueName,
+  const scatterer::illumination::Setting<double>& setting, const std::string& what, double& target)
+{
+  return AddDouble(
+    app, name, valueName, setting.Minimum, setting.Maximum, SettingHelp(what, setting), target);
 }
 
 const char* const Footer =
@@ -160,15 +193,16 @@ int ParseRenderOptions(int argc, char* argv[], RenderOptions& o)
   // for one of them only, so that a combination that would be ignored is refused.
   std::vector<CLI::Option*> both, perSample, transport;
   const std::string group = "Template illumination (--mode template only)";
-  both.push_back(AddOnOff(app, "--shadows", "occlusion: shadows (default on)", o.Shadows));
+  namespace il = scatterer::illumination;
+  both.push_back(AddSwitch(app, "--shadows", il::Shadows, "occlusion: shadows", o.Shadows));
   both.push_back(
-    AddOnOff(app, "--bleeding", "colour bleeding between materials (default on)", o.Bleeding));
+    AddSwitch(app, "--bleeding", il::ColorBleeding, "colour bleeding between materials", o.Bleeding));
   perSample.push_back(
-    AddOnOff(app, "--thin", "per-sample: thin-part check toward the light (default on)", o.Thin));
-  both.push_back(AddOnOff(
-    app, "--boundary", "Snell rescaling across material boundaries (default on)", o.Boundary));
+    AddSwitch(app, "--thin", il::ThinPartCheck, "per-sample: thin-part check toward the light", o.Thin));
+  both.push_back(AddSwitch(
+    app, "--boundary", il::BoundaryRefraction, "Snell rescaling across material boundaries", o.Boundary));
   perSample.push_back(
-    AddOnOff(app, "--blend", "per-sample: average two templates per sample (default off)", o.Blend));
+    AddSwitch(app, "--blend", il::TemplateBlending, "per-sample: average two templates per sample", o.Blend));
   both.push_back(AddValueOption(app, "--paths", "auto|requested",
     "shader code for what the scene needs (auto, default)\nor for every effect switched on",
     [&o](const std::string& v) {
@@ -185,25 +219,25 @@ int ParseRenderOptions(int argc, char* argv[], RenderOptions& o)
     "in the shader at every sample",
     o.Illumination);
   both.push_back(illumination);
-  transport.push_back(AddInt(app, "--transport-scale", "N", 1, 8,
-    "transport: volume voxels per transport voxel per axis,\n1..8 (default 2)", o.TransportScale));
-  transport.push_back(AddDouble(app, "--multiple-scattering", "K", 0.0, 16.0,
-    "transport: multiple-scattering strength, 0..16\n(default 1, physical; 0: single scattering only)",
+  transport.push_back(AddSetting(app, "--transport-scale", "N", il::TransportScale,
+    "transport: volume voxels per transport voxel per axis", o.TransportScale));
+  transport.push_back(AddSetting(app, "--multiple-scattering", "K", il::MultipleScattering,
+    "transport: multiple-scattering strength (1 physical,\n0 single scattering only)",
     o.MultipleScattering));
-  both.push_back(AddInt(app, "--photons", "N", 1, 1024,
-    "photons per template (per-sample) or kernel (transport),\n1..1024 (default 24)", o.Photons));
-  both.push_back(AddInt(
-    app, "--templates", "N", 1, 64, "templates per material, 1..64 (default 8)", o.Templates));
-  perSample.push_back(AddInt(app, "--interval", "N", 1, 64,
-    "per-sample: ray samples between photon evaluations, 1..64\n(default 4)", o.Interval));
+  both.push_back(AddSetting(app, "--photons", "N", il::PhotonCap,
+    "photons per template (per-sample) or kernel (transport)", o.Photons));
+  both.push_back(AddSetting(
+    app, "--templates", "N", il::TemplatesPerMaterial, "templates per material", o.Templates));
+  perSample.push_back(AddSetting(app, "--interval", "N", il::IlluminationInterval,
+    "per-sample: ray samples between photon evaluations", o.Interval));
   both.push_back(AddDouble(app, "--radius", "R", 1e-9, 1e9,
     "template radius in world units, > 0 (default 10 x spacing)", o.Radius));
-  perSample.push_back(AddDouble(app, "--threshold", "T", 0.0, 1.0,
-    "per-sample: photon-loop cut-off on transmittance x intensity, 0..1", o.Threshold));
+  perSample.push_back(AddSetting(app, "--threshold", "T", il::PhotonThreshold,
+    "per-sample: photon-loop cut-off on transmittance x intensity", o.Threshold));
   both.push_back(
-    AddDouble(app, "--strength", "S", 0.0, 100.0, "occlusion strength, 0..100 (default 1)", o.Strength));
-  perSample.push_back(AddDouble(app, "--long-range", "M", 1.0, 64.0,
-    "per-sample: thin-part check distance in photon offsets, 1..64\n(default 3)", o.LongRange));
+    AddSetting(app, "--strength", "S", il::OcclusionStrength, "occlusion strength", o.Strength));
+  perSample.push_back(AddSetting(app, "--long-range", "M", il::LongRangeMultiple,
+    "per-sample: thin-part check distance in photon offsets", o.LongRange));
   for (auto* list : { &both, &perSample, &transport })
   {
     for (CLI::Option* option : *list)

@@ -6,6 +6,8 @@
 
 #include "ScattererNumbers.h" // ParseSize, FormatNumber: used with these options
 
+#include "scatterer/IlluminationSettings.h"
+
 #include <string>
 
 namespace scatterer_examples
@@ -22,7 +24,11 @@ struct RenderOptions
   bool Json = false;
 
   // Template illumination (--mode template); negative = the mapper's default.
-  bool Shadows = true, Bleeding = true, Thin = true, Boundary = true, Blend = false;
+  bool Shadows = scatterer::illumination::Shadows.Default;
+  bool Bleeding = scatterer::illumination::ColorBleeding.Default;
+  bool Thin = scatterer::illumination::ThinPartCheck.Default;
+  bool Boundary = scatterer::illumination::BoundaryRefraction.Default;
+  bool Blend = scatterer::illumination::TemplateBlending.Default;
   bool RequestedPaths = false; // --paths requested: every switched-on effect
   int Photons = -1, Templates = -1, Interval = -1, TransportScale = -1;
   std::string Illumination = "transport"; // transport | per-sample

@@ -1,14 +1,18 @@
 // Parameters of template generation shared by all materials (paper section 3.2).
 #pragma once
 
+#include "scatterer/IlluminationSettings.h"
+
 #include <cstdint>
 
 namespace scatterer {
 
 struct GeneratorSettings {
   int initialLights = 4;          // L: the initial energy 1 is split over L lights (Table 2)
-  double threshold = 0.01;        // a packet below threshold * (1 / L) stops branching
-  int templatesPerMaterial = 8;   // templates per material, each from its own random stream
+  // a packet below threshold * (1 / L) stops branching
+  double threshold = illumination::GeneratorThreshold.Default;
+  // templates per material, each from its own random stream
+  int templatesPerMaterial = illumination::TemplatesPerMaterial.Default;
   std::uint64_t seed = 0x5CA77E2E5EEDull;
 
   double stepLength = 0.05;       // dx of Eq. 2: distance between scattering events, template radii
