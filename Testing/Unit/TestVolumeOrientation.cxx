@@ -2,6 +2,7 @@
 // orientation: DICOM's Image Orientation/Position (Patient) and NIfTI's sform/qform.
 // The files are written here byte by byte, so the expected world positions come from the
 // standards' formulas (DICOM PS3.3 C.7.6.2.1.1, NIfTI-1 nifti1.h), not from the readers.
+#include "ScattererDicomBytes.h"
 #include "vtkScattererVolumeReader.h"
 
 #include "vtkDataArray.h"
@@ -148,67 +149,49 @@ std::vector<uint8_t> PackBits(const std::vector<uint8_t>& bytes)
 
 void WriteDicomSlice(const std::string& path, int s, const DicomSlice& spec)
 {
-  std::vector<char> bytes(128, 0);
-  bytes.insert(bytes.end(), { 'D', 'I', 'C', 'M' });
-  auto put16 = [&](uint16_t v) { bytes.push_back(char(v & 0xff)); bytes.push_back(char(v >> 8)); };
-  auto put32 = [&](uint32_t v) { put16(uint16_t(v & 0xffff)); put16(uint16_t(v >> 16)); };
-  auto element = [&](uint16_t group, uint16_t elem, const char* vr, std::string value, char pad) {
-    if (value.size() % 2)
-      value += pad;
-    put16(group);
-    put16(elem);
-    bytes.push_back(vr[0]);
-    bytes.push_back(vr[1]);
-    put16(uint16_t(value.size()));
-    bytes.insert(bytes.end(), value.begin(), value.end());
-  };
-  auto text = [&](uint16_t g, uint16_t e, const char* vr, const std::string& v) { element(g, e, vr, v, ' '); };
-  auto uid = [&](uint16_t g, uint16_t e, const std::string& v) { element(g, e, "UI", v, 0); };
-  auto ushort = [&](uint16_t g, uint16_t e, uint16_t v) {
-    element(g, e, "US", std::string{ char(v & 0xff), char(v >> 8) }, 0);
-  };
+  scatterer_testing::DicomBytes bytes;
   const std::string instance = spec.SeriesUid + "." + std::to_string(s + 1);
-  uid(0x0002, 0x0002, "1.2.840.10008.5.1.4.1.1.2");
-  uid(0x0002, 0x0003, instance);
-  uid(0x0002, 0x0010, spec.TransferSyntax);
-  uid(0x0008, 0x0016, "1.2.840.10008.5.1.4.1.1.2");
-  uid(0x0008, 0x0018, instance);
-  text(0x0008, 0x0060, "CS", "CT");
-  text(0x0010, 0x0020, "LO", "SCATTERER");
-  uid(0x0020, 0x000D, "1.2.3.8");
-  uid(0x0020, 0x000E, spec.SeriesUid);
-  text(0x0020, 0x0011, "IS", "7");
-  text(0x0020, 0x0013, "IS", std::to_string(s + 1));
-  text(0x0020, 0x0032, "DS",
+  bytes.Uid(0x0002, 0x0002, "1.2.840.10008.5.1.4.1.1.2");
+  bytes.Uid(0x0002, 0x0003, instance);
+  bytes.Uid(0x0002, 0x0010, spec.TransferSyntax);
+  bytes.Uid(0x0008, 0x0016, "1.2.840.10008.5.1.4.1.1.2");
+  bytes.Uid(0x0008, 0x0018, instance);
+  bytes.Text(0x0008, 0x0060, "CS", "CT");
+  bytes.Text(0x0010, 0x0020, "LO", "SCATTERER");
+  bytes.Uid(0x0020, 0x000D, "1.2.3.8");
+  bytes.Uid(0x0020, 0x000E, spec.SeriesUid);
+  bytes.Text(0x0020, 0x0011, "IS", "7");
+  bytes.Text(0x0020, 0x0013, "IS", std::to_string(s + 1));
+  bytes.Text(0x0020, 0x0032, "DS",
     Number(spec.Position[0]) + "\\" + Number(spec.Position[1]) + "\\" + Number(spec.Position[2]));
-  text(0x0020, 0x0037, "DS", spec.Orientation);
-  ushort(0x0028, 0x0002, 1);
-  text(0x0028, 0x0004, "CS", "MONOCHROME2");
-  ushort(0x0028, 0x0010, ROWS);
-  ushort(0x0028, 0x0011, COLS);
-  text(0x0028, 0x0030, "DS", spec.PixelSpacing);
-  ushort(0x0028, 0x0100, 16);
-  ushort(0x0028, 0x0101, 16);
-  ushort(0x0028, 0x0102, 15);
-  ushort(0x0028, 0x0103, 0); // unsigned stored values
+  bytes.Text(0x0020, 0x0037, "DS", spec.Orientation);
+  bytes.UShort(0x0028, 0x0002, 1);
+  bytes.Text(0x0028, 0x0004, "CS", "MONOCHROME2");
+  bytes.UShort(0x0028, 0x0010, ROWS);
+  bytes.UShort(0x0028, 0x0011, COLS);
+  bytes.Text(0x0028, 0x0030, "DS", spec.PixelSpacing);
+  bytes.UShort(0x0028, 0x0100, 16);
+  bytes.UShort(0x0028, 0x0101, 16);
+  bytes.UShort(0x0028, 0x0102, 15);
+  bytes.UShort(0x0028, 0x0103, 0); // unsigned stored values
   if (spec.Rescale)
   {
-    text(0x0028, 0x1052, "DS", spec.Intercept);
-    text(0x0028, 0x1053, "DS", spec.Slope);
-    text(0x0028, 0x1054, "LO", "HU");
+    bytes.Text(0x0028, 0x1052, "DS", spec.Intercept);
+    bytes.Text(0x0028, 0x1053, "DS", spec.Slope);
+    bytes.Text(0x0028, 0x1054, "LO", "HU");
   }
   std::vector<uint16_t> pixels; // rows top-down, as DICOM stores them
   for (int r = 0; r < ROWS; ++r)
     for (int c = 0; c < COLS; ++c)
       pixels.push_back(uint16_t(Stored(c, r, s)));
-  put16(0x7FE0);
-  put16(0x0010);
+  bytes.Put16(0x7FE0);
+  bytes.Put16(0x0010);
   if (!spec.Encapsulated)
   {
-    bytes.insert(bytes.end(), { 'O', 'W', 0, 0 });
-    put32(uint32_t(pixels.size() * 2));
+    bytes.Raw({ 'O', 'W', 0, 0 });
+    bytes.Put32(uint32_t(pixels.size() * 2));
     for (uint16_t v : pixels)
-      put16(v);
+      bytes.Put16(v);
   }
   else
   {
@@ -229,14 +212,14 @@ void WriteDicomSlice(const std::string& path, int s, const DicomSlice& spec)
       fragment.insert(fragment.end(), h.begin(), h.end());
       fragment.insert(fragment.end(), l.begin(), l.end());
     }
-    bytes.insert(bytes.end(), { 'O', 'B', 0, 0 });
-    put32(0xFFFFFFFFu);
-    put16(0xFFFE); put16(0xE000); put32(0); // empty basic offset table
-    put16(0xFFFE); put16(0xE000); put32(uint32_t(fragment.size()));
-    bytes.insert(bytes.end(), fragment.begin(), fragment.end());
-    put16(0xFFFE); put16(0xE0DD); put32(0);
+    bytes.Raw({ 'O', 'B', 0, 0 });
+    bytes.Put32(0xFFFFFFFFu);
+    bytes.Put16(0xFFFE); bytes.Put16(0xE000); bytes.Put32(0); // empty basic offset table
+    bytes.Put16(0xFFFE); bytes.Put16(0xE000); bytes.Put32(uint32_t(fragment.size()));
+    bytes.Raw(fragment.begin(), fragment.end());
+    bytes.Put16(0xFFFE); bytes.Put16(0xE0DD); bytes.Put32(0);
   }
-  std::ofstream(path, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
+  bytes.Write(path);
 }
 
 // A sagittal series: rows run anterior->posterior (+y), columns superior->inferior (-z),

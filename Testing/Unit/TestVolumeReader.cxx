@@ -1,5 +1,6 @@
 // vtkScattererVolumeReader: each format opens by its path, and missing,
 // unknown and truncated files fail with a message that says what and why.
+#include "ScattererDicomBytes.h"
 #include "vtkScattererVolumeReader.h"
 
 #include "vtkDataArray.h"
@@ -139,53 +140,36 @@ void WriteNrrd(const std::string& path)
 // A minimal explicit-VR little-endian CT slice: enough for vtkDICOMImageReader.
 void WriteDicomSlice(const std::string& path, int k)
 {
-  std::vector<char> bytes(128, 0);
-  bytes.insert(bytes.end(), { 'D', 'I', 'C', 'M' });
-  auto put16 = [&](uint16_t v) { bytes.push_back(char(v & 0xff)); bytes.push_back(char(v >> 8)); };
-  auto put32 = [&](uint32_t v) { put16(uint16_t(v & 0xffff)); put16(uint16_t(v >> 16)); };
-  auto element = [&](uint16_t group, uint16_t elem, const char* vr, std::string value, char pad) {
-    if (value.size() % 2)
-      value += pad;
-    put16(group);
-    put16(elem);
-    bytes.push_back(vr[0]);
-    bytes.push_back(vr[1]);
-    put16(uint16_t(value.size()));
-    bytes.insert(bytes.end(), value.begin(), value.end());
-  };
-  auto text = [&](uint16_t g, uint16_t e, const char* vr, const std::string& v) { element(g, e, vr, v, ' '); };
-  auto ushort = [&](uint16_t g, uint16_t e, uint16_t v) {
-    element(g, e, "US", std::string{ char(v & 0xff), char(v >> 8) }, 0);
-  };
-  element(0x0002, 0x0002, "UI", "1.2.840.10008.5.1.4.1.1.2", 0);
-  element(0x0002, 0x0003, "UI", "1.2.3.4." + std::to_string(k + 1), 0);
-  element(0x0002, 0x0010, "UI", "1.2.840.10008.1.2.1", 0);
-  text(0x0008, 0x0060, "CS", "CT");
-  element(0x0020, 0x000E, "UI", "1.2.3.9", 0);
-  text(0x0020, 0x0013, "IS", std::to_string(k + 1));
-  text(0x0020, 0x0032, "DS", "0\\0\\" + std::to_string(2 * k));
-  text(0x0020, 0x0037, "DS", "1\\0\\0\\0\\1\\0");
-  ushort(0x0028, 0x0002, 1);
-  text(0x0028, 0x0004, "CS", "MONOCHROME2");
-  ushort(0x0028, 0x0010, NY);
-  ushort(0x0028, 0x0011, NX);
-  text(0x0028, 0x0030, "DS", "0.75\\0.5");
-  ushort(0x0028, 0x0100, 16);
-  ushort(0x0028, 0x0101, 16);
-  ushort(0x0028, 0x0102, 15);
-  ushort(0x0028, 0x0103, 1);
-  put16(0x7FE0);
-  put16(0x0010);
-  bytes.insert(bytes.end(), { 'O', 'W', 0, 0 });
-  put32(NX * NY * 2);
+  scatterer_testing::DicomBytes bytes;
+  bytes.Uid(0x0002, 0x0002, "1.2.840.10008.5.1.4.1.1.2");
+  bytes.Uid(0x0002, 0x0003, "1.2.3.4." + std::to_string(k + 1));
+  bytes.Uid(0x0002, 0x0010, "1.2.840.10008.1.2.1");
+  bytes.Text(0x0008, 0x0060, "CS", "CT");
+  bytes.Uid(0x0020, 0x000E, "1.2.3.9");
+  bytes.Text(0x0020, 0x0013, "IS", std::to_string(k + 1));
+  bytes.Text(0x0020, 0x0032, "DS", "0\\0\\" + std::to_string(2 * k));
+  bytes.Text(0x0020, 0x0037, "DS", "1\\0\\0\\0\\1\\0");
+  bytes.UShort(0x0028, 0x0002, 1);
+  bytes.Text(0x0028, 0x0004, "CS", "MONOCHROME2");
+  bytes.UShort(0x0028, 0x0010, NY);
+  bytes.UShort(0x0028, 0x0011, NX);
+  bytes.Text(0x0028, 0x0030, "DS", "0.75\\0.5");
+  bytes.UShort(0x0028, 0x0100, 16);
+  bytes.UShort(0x0028, 0x0101, 16);
+  bytes.UShort(0x0028, 0x0102, 15);
+  bytes.UShort(0x0028, 0x0103, 1);
+  bytes.Put16(0x7FE0);
+  bytes.Put16(0x0010);
+  bytes.Raw({ 'O', 'W', 0, 0 });
+  bytes.Put32(NX * NY * 2);
   // DICOM stores rows top-down: write VTK's row NY-1 first.
   auto image = MakeVolume();
   for (int j = NY - 1; j >= 0; --j)
   {
     const auto* p = static_cast<const char*>(image->GetScalarPointer(0, j, k));
-    bytes.insert(bytes.end(), p, p + NX * 2);
+    bytes.Raw(p, p + NX * 2);
   }
-  std::ofstream(path, std::ios::binary).write(bytes.data(), bytes.size());
+  bytes.Write(path);
 }
 }
 
