@@ -8,7 +8,11 @@
 # - PYTHONPATH: python3-paraview is unpacked, not installed (it conflicts with
 #   python3-vtk9), so neither pvbatch nor the GUI's Python (Python shell, --script)
 #   finds `paraview` without it.
-# - PATH: pvpython is in that unpacked package (usr/bin), not in `paraview`.
+# - pvpython is not in the `paraview` package. The one in the unpacked package
+#   (usr/bin/pvpython) segfaults on `import paraview.simple` here: it puts
+#   /usr/lib/python3/dist-packages, where python3-vtk9 keeps VTK 9.1's vtkmodules, ahead
+#   of PYTHONPATH. So `pvpython` runs Debian's python3 (the Python ParaView is built
+#   with), which finds ParaView's modules on PYTHONPATH first.
 # - PV_PLUGIN_PATH: ParaView loads the plugin at start-up (GUI, pvbatch, pvpython).
 # - OMPI_*: Open MPI refuses to run as root (containers, CI) unless told twice.
 #   mpirun passes only the variables named with -x to the ranks; these are added.
@@ -26,7 +30,6 @@ if [ ! -d "$pvpython_root/usr/lib/python3/dist-packages/paraview" ]; then
   exit 1
 fi
 export PYTHONPATH="$pvpython_root/usr/lib/python3/dist-packages${PYTHONPATH:+:$PYTHONPATH}"
-export PATH="$pvpython_root/usr/bin:$PATH"
 export PV_PLUGIN_PATH="$build/lib/paraview-5.11/plugins/ScattererTemplatePlugin${PV_PLUGIN_PATH:+:$PV_PLUGIN_PATH}"
 if [ "$(id -u)" = 0 ]; then
   export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
@@ -38,6 +41,10 @@ fi
 if [ "$(basename "$1")" = mpirun ] || [ "$(basename "$1")" = mpiexec ]; then
   launcher="$1"
   shift
-  exec "$launcher" -x PYTHONPATH -x PATH -x PV_PLUGIN_PATH "$@"
+  exec "$launcher" -x PYTHONPATH -x PV_PLUGIN_PATH "$@"
+fi
+if [ "$1" = pvpython ]; then
+  shift
+  set -- /usr/bin/python3 "$@"
 fi
 exec "$@"
