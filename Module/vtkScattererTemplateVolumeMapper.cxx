@@ -8,6 +8,7 @@
 #include "vtkScattererTransportVolume.h"
 
 #include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
@@ -137,6 +138,8 @@ struct vtkScattererTemplateVolumeMapper::vtkInternals
   std::string UploadedKey;
 
   double LastTransportMs = 0.0;
+  // This frame rebuilt something and reported progress: GPURender reports 1 at its end.
+  bool ProgressReported = false;
   // Transport mode: the light transport volume (owns its textures and change key).
   vtkNew<vtkScattererTransportVolume> Transport;
   // Transport mode: what the transport volume is built from (kept between frames: its
@@ -440,6 +443,32 @@ void vtkScattererTemplateVolumeMapper::GPURender(vtkRenderer* ren, vtkVolume* vo
   {
     this->RenderStock(ren, vol, stock);
   }
+  if (this->Internals->ProgressReported)
+  {
+    this->ReportProgress(1.0);
+    this->Internals->ProgressReported = false;
+  }
+}
+
+namespace
+{
+// Progress of a frame that rebuilds its illumination (ProgressEvent): the templates
+// (CPU) up to kTemplatesDone, the transport volume's GPU stages up to kTransportDone,
+// the image itself the rest. Frames that rebuild nothing report nothing.
+constexpr double kTemplatesDone = 0.1;
+constexpr double kTransportDone = 0.95;
+constexpr const char* kProgressText = "Scatterer illumination";
+}
+
+void vtkScattererTemplateVolumeMapper::ReportProgress(double fraction)
+{
+  this->Internals->ProgressReported = true;
+  // The text tells these reports from the 0 and 1 that the mapper's own executive
+  // reports whenever its pipeline runs (vtkScattererVolumeRepresentation forwards
+  // only ours). SetProgressText does not modify the mapper.
+  this->SetProgressText(kProgressText);
+  this->UpdateProgress(fraction);
+  this->SetProgressText(nullptr);
 }
 
 void vtkScattererTemplateVolumeMapper::RenderStock(
@@ -649,12 +678,14 @@ std::string vtkScattererTemplateVolumeMapper::UpdateTemplates(const FramePlan& p
   scatterer::GeneratorSettings settings;
   settings.templatesPerMaterial = this->TemplatesPerMaterial;
   settings.threshold = this->GeneratorThreshold;
+  this->ReportProgress(0.0);
   try
   {
     in.RawTemplates = scatterer::generateAllTemplates(physics, settings);
     in.Templates = in.RawTemplates;
     NormalizeExtent(in.Templates);
     in.Packed = scatterer::packTemplates(in.Templates, this->PhotonCap);
+    this->ReportProgress(kTemplatesDone);
   }
   catch (const std::exception& e)
   {
@@ -818,6 +849,19 @@ std::string vtkScattererTemplateVolumeMapper::UpdateTransport(
   if (interactive && !in.Transport->IsCurrent(renWin, t))
   {
     t.Downsample = this->InteractiveTransportScale;
+  }
+  // Progress only when someone listens (ParaView's progress bar via the
+  // representation): reporting makes the build wait for each GPU stage.
+  if (this->HasObserver(vtkCommand::ProgressEvent) && !in.Transport->IsCurrent(renWin, t))
+  {
+    this->ReportProgress(kTemplatesDone);
+    in.Transport->SetProgressCallback([this](double fraction) {
+      this->ReportProgress(kTemplatesDone + (kTransportDone - kTemplatesDone) * fraction);
+    });
+  }
+  else
+  {
+    in.Transport->SetProgressCallback(nullptr);
   }
   std::string why;
   if (!in.Transport->Update(renWin, t, why))

@@ -40,6 +40,15 @@
  * are rejected with an error; values outside a parameter's range are clamped
  * with a warning.
  *
+ * Progress (vtkCommand::ProgressEvent): a frame that rebuilds the illumination
+ * reports 0 when the templates are regenerated, 0.1 when they are done, then the
+ * light transport volume's GPU stages up to 0.95 (a quarter of each light's sweep,
+ * its gather, the coarsening, each diffusion iteration, the combine; only while an
+ * observer is present, because each report waits for the GPU), and 1 after the
+ * image, with the progress text "Scatterer illumination" (the mapper's executive
+ * also reports 0 and 1, untitled, when its pipeline runs). Frames that rebuild
+ * nothing report nothing.
+ *
  * @sa vtkOpenGLGPUVolumeRayCastMapper
  */
 #ifndef vtkScattererTemplateVolumeMapper_h
@@ -394,6 +403,9 @@ protected:
   vtkTimeStamp IlluminationTime;
 
 private:
+  /** UpdateProgress, and remember to report 1 at the end of the frame. */
+  void ReportProgress(double fraction);
+
   vtkScattererTemplateVolumeMapper(const vtkScattererTemplateVolumeMapper&) = delete;
   void operator=(const vtkScattererTemplateVolumeMapper&) = delete;
 

@@ -26,12 +26,17 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <initializer_list>
+#include <utility>
 
 vtkStandardNewMacro(vtkScattererTransportVolume);
 
 namespace
 {
+// Progress reports per light sweep: a sweep is most of a build's GPU time.
+constexpr int kSweepSteps = 4;
+
 // The common declarations go where the pass has its tag.
 std::string WithCommon(const char* pass)
 {
@@ -161,6 +166,19 @@ struct vtkScattererTransportVolume::vtkInternals
   vtkSmartPointer<vtkTextureObject> Kernel;        // RGBA32F, photons x materials
   vtkSmartPointer<vtkTextureObject> Materials;     // R32F, material index over the scalar
   vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
+  std::function<void(double)> Progress; // SetProgressCallback
+  bool Building = false;                // in Update (not ReadTransmittance's sweep)
+  int StepsDone = 0, StepsTotal = 1;    // progress of the build under way
+  /** One more stage of the build is queued: wait for it and report the fraction. */
+  void StepDone()
+  {
+    ++this->StepsDone;
+    if (this->Progress && this->Building)
+    {
+      glFinish();
+      this->Progress(std::min(1.0, this->StepsDone / static_cast<double>(this->StepsTotal)));
+    }
+  }
   std::unique_ptr<vtkOpenGLQuadHelper> Sweep;
   std::unique_ptr<vtkOpenGLQuadHelper> Gather;
   std::unique_ptr<vtkOpenGLQuadHelper> Coarsen;
@@ -478,6 +496,14 @@ bool vtkScattererTransportVolume::vtkInternals::SweepLight(
   vtkOpenGLState* state = this->Context->GetState();
   state->vtkglViewport(0, 0, w, h);
   int current = 0;
+  // Progress: kSweepSteps reports per sweep, the last one after the sweep (Update).
+  int total = 0;
+  for (const auto& run : plan.Runs)
+  {
+    total += std::abs(run.second - run.first) + 1;
+  }
+  const int chunk = std::max(1, (total + kSweepSteps - 1) / kSweepSteps);
+  int swept = 0;
   for (const auto& run : plan.Runs)
   {
     const int step = run.second >= run.first ? 1 : -1;
@@ -499,6 +525,10 @@ bool vtkScattererTransportVolume::vtkInternals::SweepLight(
       previous->Deactivate();
       current = 1 - current;
       first = false;
+      if (++swept % chunk == 0 && swept < total)
+      {
+        this->StepDone();
+      }
       if (k == run.second)
       {
         break;
@@ -649,6 +679,7 @@ bool vtkScattererTransportVolume::vtkInternals::AddScatteredAndAmbientLight(cons
     coarsen->SetUniformi("st_source", this->Source->GetTextureUnit());
     DrawLayers(this->Framebuffer, this->Coarsen.get(), coarsen,
       { this->CoarseMedium, this->CoarseSource }, this->CoarseDims[2]);
+    this->StepDone();
     this->Source->Deactivate();
     this->Medium->Deactivate();
     in.Volume->Deactivate();
@@ -674,6 +705,7 @@ bool vtkScattererTransportVolume::vtkInternals::AddScatteredAndAmbientLight(cons
       this->CoarseDims[2]);
     previous->Deactivate();
     current = 1 - current;
+    this->StepDone();
   }
   this->CoarseSource->Deactivate();
   this->CoarseMedium->Deactivate();
@@ -933,6 +965,12 @@ bool vtkScattererTransportVolume::Update(
   }
 
   PassState passes(window, s.Framebuffer);
+  // Progress stages: per light its sweep (kSweepSteps) and gather; then the coarsening,
+  // the diffusion iterations and the combine.
+  const int iterations = in.MultipleScattering > 0.0f ? std::max(1, in.DiffusionIterations) : 0;
+  s.StepsDone = 0;
+  s.StepsTotal = static_cast<int>(in.Lights.size()) * (kSweepSteps + 1) + 2 + iterations;
+  s.Building = true;
   bool ok = true;
   for (size_t l = 0; l < in.Lights.size() && ok; ++l)
   {
@@ -940,13 +978,22 @@ bool vtkScattererTransportVolume::Update(
     ok = s.SweepLight(in, in.Lights[l], why);
     if (ok)
     {
+      s.StepsDone = static_cast<int>(l) * (kSweepSteps + 1) + kSweepSteps - 1;
+      s.StepDone();
       s.GatherLight(in, in.Lights[l], l == 0);
+      s.StepDone();
     }
   }
   if (ok)
   {
     ok = s.AddScatteredAndAmbientLight(in, why);
   }
+  if (ok)
+  {
+    s.StepsDone = s.StepsTotal - 1;
+    s.StepDone(); // the combine: 1
+  }
+  s.Building = false;
 
   if (!ok)
   {
@@ -977,6 +1024,11 @@ std::vector<float> Download(vtkTextureObject* texture, int components)
   texture->Deactivate();
   return data;
 }
+}
+
+void vtkScattererTransportVolume::SetProgressCallback(std::function<void(double)> callback)
+{
+  this->Internals->Progress = std::move(callback);
 }
 
 std::vector<float> vtkScattererTransportVolume::ReadTransmittance(

@@ -33,7 +33,8 @@
 #include "ScattererTemplateModule.h" // for export macro
 #include "vtkObject.h"
 
-#include <memory> // for Internals
+#include <functional> // for the progress callback
+#include <memory>     // for Internals
 #include <string> // for Inputs
 #include <vector> // for Inputs
 
@@ -138,6 +139,16 @@ public:
   std::vector<float> ReadLight(vtkOpenGLRenderWindow* window);
 
   void ReleaseGraphicsResources(vtkWindow* window);
+
+  /**
+   * Called during a rebuild with the fraction of its passes done, (0, 1]: after each
+   * quarter of each light's sweep, each gather, the coarsening, each diffusion
+   * iteration and the final combine. The passes run on the GPU asynchronously, so with
+   * a callback set the build waits for each stage (glFinish) before reporting it: the
+   * fraction then says what the GPU has done, not what was queued. Unset (the
+   * default), nothing waits. The mapper forwards it as its ProgressEvent.
+   */
+  void SetProgressCallback(std::function<void(double)> callback);
 
   ///@{
   /**

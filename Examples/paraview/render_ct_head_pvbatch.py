@@ -1,8 +1,7 @@
 """Renders the CT head with the ScattererTemplate ParaView plugin in pvbatch; writes a PNG.
 
   bash scripts/build-paraview-plugin.sh && bash scripts/prepare-data.sh
-  export PYTHONPATH=$PWD/build-paraview/paraview-python/usr/lib/python3/dist-packages
-  [mpirun -np N -x PYTHONPATH] pvbatch Examples/paraview/render_ct_head_pvbatch.py --out ct-head.png
+  bash scripts/paraview-env.sh [mpirun -np N] pvbatch Examples/paraview/render_ct_head_pvbatch.py --out ct-head.png
 
 With N ranks the volume is split into N pieces, each with ghost layers as wide as the
 illumination reach (docs/paraview.md). Prints one JSON line: ranks, the first frame

@@ -76,7 +76,18 @@ def default_plugin_path():
                         "ScattererTemplatePlugin", "ScattererTemplatePlugin.so")
 
 
+def plugin_loaded(name="ScattererTemplatePlugin"):
+    """True when ParaView loaded the plugin already (PV_PLUGIN_PATH, as
+    scripts/paraview-env.sh sets it): a second LoadPlugin fails with an error."""
+    info = servermanager.vtkSMProxyManager.GetProxyManager().GetPluginManager() \
+        .GetLocalInformation()
+    return any(info.GetPluginName(i) == name and info.GetPluginLoaded(i)
+               for i in range(info.GetNumberOfPlugins()))
+
+
 def load_plugin(path):
+    if plugin_loaded():
+        return
     if not os.path.isfile(path):
         raise SystemExit("ScattererTemplate plugin not found: %s (build it with "
                          "scripts/build-paraview-plugin.sh)" % path)

@@ -162,9 +162,70 @@ def split_shadow_two_ranks(args):
           % (stats, SPLIT_SHADOW_TOLERANCE))
 
 
+def representation_object(display):
+    """The vtkScattererVolumeRepresentation behind a "Scatterer Volume" display (this
+    process's; Python sees it as its wrapped base, vtkImageVolumeRepresentation)."""
+    active = display.GetClientSideObject().GetActiveRepresentation()
+    check(active.IsA("vtkScattererVolumeRepresentation"), "the active representation is "
+          "vtkScattererVolumeRepresentation (%s)" % active.GetClassName())
+    return active
+
+
+def progress_and_interaction_one_rank(args):
+    """Progress while the illumination is built, and coarser sampling while dragging."""
+    from paraview import servermanager
+    mhd = scenes.write_split_shadow_volume(args.out_dir)
+    scene = scenes.SPLIT_SHADOW_SCENE
+    view = scenes.make_view(SIZE, scene)
+    display = scenes.show_volume(scenes.open_volume(mhd), view, "Scatterer Volume", scene)
+    display.ScattererTransportScale = 1  # a finer transport volume: more GPU stages' worth
+    representation = representation_object(display)
+    events = []  # (text, progress): the pipeline's own updates report 0 and 1 untitled
+    representation.AddObserver("ProgressEvent", lambda caller, event: events.append(
+        (caller.GetProgressText(), caller.GetProgress())))
+    # What ParaView's progress bar gets: the session's progress handler, which observes
+    # the representation (throttled to ProgressInterval: 1 s in pvbatch, 0.1 s in the GUI).
+    handler = servermanager.ActiveConnection.Session.GetProgressHandler()
+    handler.SetProgressInterval(0.01)
+    relayed = []
+    handler.AddObserver("ProgressEvent", lambda caller, event: relayed.append(
+        (caller.GetLastProgressText(), caller.GetLastProgress())))
+    view.StillRender()
+    print("representation progress: %s" % events)
+    seen = [p for text, p in events if text == "Scatterer illumination"]
+    inside = sorted(set(p for p in seen if 0.0 < p < 1.0))
+    print("progress handler: %s" % relayed)
+    check(len(inside) > 2, "more than two distinct progress values between 0 and 1 while the "
+          "illumination is built: %d" % len(inside))
+    check(seen == sorted(seen) and seen and seen[-1] == 1.0,
+          "the progress rises and ends at 1")
+    check(any(text == "Scatterer illumination" for text, _ in relayed),
+          "ParaView's progress handler relays it as 'Scatterer illumination'")
+    before = len(events)
+    view.CameraPosition = [c + 0.001 for c in view.CameraPosition]
+    view.StillRender()
+    check(len(events) == before, "a frame that rebuilds nothing reports no progress: %s"
+          % events[before:])
+
+    # Dragging: ParaView renders interactively (desired update rate 5); the mapper then
+    # samples adaptively (AutoAdjustSampleDistances), as "Volume" does; still frames do not.
+    from vtkmodules import vtkRenderingVolumeOpenGL2  # noqa: F401 (wraps the mapper's base)
+    mapper = representation.GetActor().GetMapper()
+    view.InteractiveRender()
+    interactive = mapper.GetAutoAdjustSampleDistances()
+    features = scenes.rank0_info(display)["ScattererShaderFeaturesInfo"][0]
+    view.StillRender()
+    still = mapper.GetAutoAdjustSampleDistances()
+    check(interactive == 1 and still == 0, "adaptive sampling on interactive frames only "
+          "(interactive %d, still %d)" % (interactive, still))
+    check(features.startswith("transport"), "interactive frames keep the illumination: %s"
+          % features)
+
+
 CASES = {"ct-head-one-rank": ct_head_one_rank, "ct-head-two-ranks": ct_head_two_ranks,
          "split-shadow-one-rank": split_shadow_one_rank,
-         "split-shadow-two-ranks": split_shadow_two_ranks}
+         "split-shadow-two-ranks": split_shadow_two_ranks,
+         "progress-interaction-one-rank": progress_and_interaction_one_rank}
 
 parser = argparse.ArgumentParser(description="pvbatch tests of the ScattererTemplate plugin")
 parser.add_argument("case", choices=sorted(CASES))

@@ -1,6 +1,7 @@
 #include "vtkScattererVolumeRepresentation.h"
 
 #include "vtkCellData.h"
+#include "vtkCommand.h"
 #include "vtkDataObject.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkImageData.h"
@@ -8,7 +9,9 @@
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkPVView.h"
 #include "vtkPointData.h"
+#include "vtkRenderWindow.h"
 #include "vtkScattererTemplateVolumeMapper.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
@@ -23,6 +26,9 @@ namespace
 {
 // Enough for any reach on any volume a piece can hold; keeps the int conversion sane.
 constexpr int kMaxGhostLevels = 4096;
+// vtkSmartVolumeMapper's default InteractiveUpdateRate: ParaView's render view asks for
+// 5 frames per second while the user drags and 0.002 for still frames.
+constexpr double kInteractiveUpdateRate = 1.0;
 }
 
 vtkScattererVolumeRepresentation::vtkScattererVolumeRepresentation()
@@ -33,7 +39,27 @@ vtkScattererVolumeRepresentation::vtkScattererVolumeRepresentation()
   // sample distance, so "Scatterer Volume" with illumination off looks as "Volume".
   mapper->UseJitteringOn();
   mapper->AutoAdjustSampleDistancesOff();
+  // ParaView's progress handler observes the representation (the proxy's object), not
+  // the mapper that does the long work in the first frame.
+  mapper->AddObserver(
+    vtkCommand::ProgressEvent, this, &vtkScattererVolumeRepresentation::ForwardMapperProgress);
   this->VolumeMapper = mapper;
+}
+
+void vtkScattererVolumeRepresentation::ForwardMapperProgress(
+  vtkObject* caller, unsigned long, void* callData)
+{
+  // Only the illumination's reports carry a text: the 0 and 1 of the mapper's own
+  // pipeline runs (every few frames) would make the progress bar flicker.
+  auto* mapper = vtkAlgorithm::SafeDownCast(caller);
+  if (!mapper || !mapper->GetProgressText())
+  {
+    return;
+  }
+  // SetProgressText does not modify the algorithm (a render must not re-execute it).
+  this->SetProgressText(mapper->GetProgressText());
+  this->UpdateProgress(*static_cast<double*>(callData));
+  this->SetProgressText(nullptr);
 }
 
 vtkScattererVolumeRepresentation::~vtkScattererVolumeRepresentation() = default;
@@ -165,6 +191,12 @@ void vtkScattererVolumeRepresentation::UpdateMapperParameters()
   // The superclass sets the user's cropping planes when cropping is on.
   this->VolumeMapper->SetCropping(this->UserCropping);
   this->Superclass::UpdateMapperParameters();
+  // Coarser sampling while dragging, as "Volume" does (see the class comment). Called
+  // for every render (REQUEST_RENDER), after the view set the window's update rate.
+  auto* view = vtkPVView::SafeDownCast(this->GetView());
+  vtkRenderWindow* window = view ? view->GetRenderWindow() : nullptr;
+  this->GetScattererMapper()->SetAutoAdjustSampleDistances(
+    window && window->GetDesiredUpdateRate() >= kInteractiveUpdateRate ? 1 : 0);
   // Materials come from the opacity transfer function over its own range, which
   // ParaView keeps the same on every rank (the whole data range unless the user
   // chose another): every piece then derives the materials the whole volume would,

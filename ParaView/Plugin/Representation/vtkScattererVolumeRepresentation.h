@@ -18,6 +18,16 @@
  * stay non-overlapping for ParaView's ordered compositing. Readers that cannot deliver
  * sub-extents (e.g. MetaImage) put the whole volume on one rank: that renders
  * correctly, just not in parallel.
+ *
+ * Progress: the mapper's ProgressEvent while it rebuilds its illumination (templates,
+ * then the GPU stages of the light transport volume) is re-sent as this
+ * representation's own, which ParaView's progress handler observes: the progress bar
+ * moves during a long first frame instead of jumping from 0 to 1.
+ *
+ * Interaction: as ParaView's "Volume" (vtkSmartVolumeMapper with
+ * InteractiveAdjustSampleDistances), frames the view renders interactively (desired
+ * update rate >= 1) use the mapper's AutoAdjustSampleDistances (coarser ray and image
+ * sampling to fit the time budget); still frames keep the fixed sample distance.
  */
 #ifndef vtkScattererVolumeRepresentation_h
 #define vtkScattererVolumeRepresentation_h
@@ -98,6 +108,9 @@ protected:
   void UpdateMapperParameters() override;
 
 private:
+  /** The mapper's ProgressEvent, re-sent as this representation's. */
+  void ForwardMapperProgress(vtkObject* caller, unsigned long event, void* callData);
+
   vtkScattererVolumeRepresentation(const vtkScattererVolumeRepresentation&) = delete;
   void operator=(const vtkScattererVolumeRepresentation&) = delete;
 
