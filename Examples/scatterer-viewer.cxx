@@ -48,8 +48,6 @@
 #include "vtkScattererTemplateVolumeMapper.h"
 #include "vtkScattererVolumeReader.h"
 #include "vtkSmartPointer.h"
-#include "vtkTextActor.h"
-#include "vtkTextProperty.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
@@ -189,10 +187,10 @@ int ParseArgs(int argc, char* argv[], Options& o)
     "value). Refused as contradictory: --record with --output or --test (those runs end\n"
     "after the played events: nothing to record), and --record naming the --play-events\n"
     "file. The input files are read and checked before the display is needed.\n"
-    "Exit status: 0 ok (with --test: every --test check passed); 1 a volume or recording that cannot be read or is refused, no X display, a\n"
-    "VTK error while rendering with --output, the PNG cannot be written, or a --test check\n"
-    "failed; 2 a bad command line (usage error); 77 --test without the prepared CT head\n"
-    "(CTest: skipped).\n");
+    "Exit status: 0 ok (with --test: every --test check passed); 1 a volume or recording\n"
+    "that cannot be read or is refused, no X display, a VTK error while rendering with\n"
+    "--output, the PNG cannot be written, or a --test check failed; 2 a bad command line\n"
+    "(usage error); 77 --test without the prepared CT head (CTest: skipped).\n");
   const auto store = [](std::string& target) {
     return [&target](const std::string& v) { target = v; };
   };
