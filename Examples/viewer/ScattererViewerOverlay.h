@@ -6,12 +6,12 @@
 #define ScattererViewerOverlay_h
 
 #include "vtkNew.h"
+#include "vtkRenderer.h"  // for vtkNew<vtkRenderer> (the strip)
+#include "vtkTextActor.h" // for vtkNew<vtkTextActor> (status and help)
 
 #include <string>
 
 class vtkRenderWindow;
-class vtkRenderer;
-class vtkTextActor;
 
 namespace scatterer_viewer
 {
