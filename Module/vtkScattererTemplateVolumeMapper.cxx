@@ -1,5 +1,6 @@
 #include "vtkScattererTemplateVolumeMapper.h"
 
+#include "ScattererMaskTexture.h"
 #include "ScattererProgramBudget.h"
 #include "ScattererSceneLights.h"
 #include "ScattererSceneMaterials.h"
@@ -142,6 +143,8 @@ struct vtkScattererTemplateVolumeMapper::vtkInternals
   bool ProgressReported = false;
   // Transport mode: the light transport volume (owns its textures and change key).
   vtkNew<vtkScattererTransportVolume> Transport;
+  // Transport mode: the binary mask as the transport volume reads it.
+  scatterer_gpu::MaskTexture Mask;
   // Transport mode: what the transport volume is built from (kept between frames: its
   // tables are rebuilt only when TablesKey changes).
   vtkScattererTransportVolume::Inputs TransportInputs;
@@ -366,6 +369,7 @@ void vtkScattererTemplateVolumeMapper::ReleaseGraphicsResources(vtkWindow* windo
 {
   vtkInternals& in = *this->Internals;
   in.Transport->ReleaseGraphicsResources(window);
+  in.Mask.ReleaseGraphicsResources(window);
   for (auto* texture : { &in.Texture })
   {
     if (*texture)
@@ -386,7 +390,7 @@ void vtkScattererTemplateVolumeMapper::ReleaseGraphicsResources(vtkWindow* windo
 namespace
 {
 // Why illumination cannot apply to this volume, or "" if it can.
-std::string Unsupported(vtkOpenGLGPUVolumeRayCastMapper* mapper, vtkVolume* vol)
+std::string Unsupported(vtkScattererTemplateVolumeMapper* mapper, vtkVolume* vol)
 {
   if (mapper->GetBlendMode() != vtkVolumeMapper::COMPOSITE_BLEND)
   {
@@ -401,9 +405,15 @@ std::string Unsupported(vtkOpenGLGPUVolumeRayCastMapper* mapper, vtkVolume* vol)
   {
     return "a rectilinear-grid input";
   }
-  if (mapper->GetMaskInput())
+  if (mapper->GetMaskInput() && mapper->GetMaskType() != vtkGPUVolumeRayCastMapper::BinaryMaskType)
   {
-    return "a mask input";
+    return "a label-map mask";
+  }
+  if (mapper->GetMaskInput() &&
+    mapper->GetIlluminationMode() != vtkScattererTemplateVolumeMapper::TRANSPORT)
+  {
+    // The per-sample photon test would still see masked-out matter as occluders.
+    return "a mask input in per-sample mode (the transport mode honours binary masks)";
   }
   if (mapper->GetUseDepthPass())
   {
@@ -736,6 +746,26 @@ std::string vtkScattererTemplateVolumeMapper::UpdateTransport(
   t.ScalarScale = volumeTexture->HandleLargeDataTypes ? 1.0f : volumeTexture->Scale[0];
   t.ScalarBias = volumeTexture->HandleLargeDataTypes ? 0.0f : volumeTexture->Bias[0];
   t.VolumeUploadTime = volumeTexture->UploadTime.GetMTime();
+  // A binary mask (Unsupported refused the other kinds): masked-out matter neither
+  // shows (the ray caster's mask) nor casts shadow or scatters (the transport volume).
+  t.Mask = nullptr;
+  t.MaskUploadTime = 0;
+  if (vtkImageData* mask = this->GetMaskInput())
+  {
+    const int volumeDims[3] = { static_cast<int>(block->TextureObject->GetWidth()),
+      static_cast<int>(block->TextureObject->GetHeight()),
+      static_cast<int>(block->TextureObject->GetDepth()) };
+    std::string why;
+    t.Mask = in.Mask.Update(vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()), mask,
+      volumeDims, why);
+    if (!t.Mask)
+    {
+      warnOnce("Scatterer-template illumination cannot use this mask: " + why +
+        "; this volume renders as vtkOpenGLGPUVolumeRayCastMapper would.");
+      return "an unusable mask";
+    }
+    t.MaskUploadTime = in.Mask.GetUploadTime();
+  }
   // Texture coordinate -> structured index -> physical (origin, spacing, direction)
   // -> world (the volume's matrix). Texel centre (i + 0.5) / N holds data point i
   // (cell data: the centre of cell i), so distances are the data's own.

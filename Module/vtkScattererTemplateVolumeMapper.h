@@ -28,10 +28,12 @@
  * text changes.
  *
  * Illumination applies to composite blending of single-component scalars
- * (intensities or label maps) in one block. Other blend modes, multi-component
- * data, masks, multi-volumes, partitioned volumes, rectilinear grids,
- * depth-pass and 2D transfer functions render as the stock mapper does, with
- * one warning if illumination was asked for.
+ * (intensities or label maps) in one block, with or without a binary mask
+ * (transport mode: masked-out matter neither shows nor casts shadow). Other blend
+ * modes, multi-component data, label-map masks, a mask in per-sample mode,
+ * multi-volumes, partitioned volumes, rectilinear grids, depth-pass and 2D
+ * transfer functions render as the stock mapper does, with one warning if
+ * illumination was asked for.
  *
  * Parameters that only feed shader uniforms or the transport volume do not
  * call Modified(): the stock mapper rebuilds its shader whenever the mapper's

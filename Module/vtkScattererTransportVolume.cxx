@@ -34,6 +34,34 @@ vtkStandardNewMacro(vtkScattererTransportVolume);
 
 namespace
 {
+// The scalar texture, and the mask when there is one, for a pass that reads the medium.
+void BindVolume(vtkShaderProgram* program, const vtkScattererTransportVolume::Inputs& in)
+{
+  in.Volume->Activate();
+  program->SetUniformi("st_volume", in.Volume->GetTextureUnit());
+  if (in.Mask)
+  {
+    in.Mask->Activate();
+    program->SetUniformi("st_mask", in.Mask->GetTextureUnit());
+  }
+  else
+  {
+    // Unused (st_masked 0), but a sampler keeps its unit between draws, and a
+    // sampler3D left on a unit where a 2D texture is bound now makes the draw invalid
+    // (GL_INVALID_OPERATION: nothing is drawn). The volume's unit is always 3D.
+    program->SetUniformi("st_mask", in.Volume->GetTextureUnit());
+  }
+}
+
+void UnbindVolume(const vtkScattererTransportVolume::Inputs& in)
+{
+  if (in.Mask)
+  {
+    in.Mask->Deactivate();
+  }
+  in.Volume->Deactivate();
+}
+
 // Progress reports per light sweep: a sweep is most of a build's GPU time.
 constexpr int kSweepSteps = 4;
 
@@ -417,6 +445,7 @@ void vtkScattererTransportVolume::vtkInternals::SetCommonUniforms(
   }
   program->SetUniform4fv("st_clipPlanes", 6, clip);
   program->SetUniformi("st_clipCount", planes);
+  program->SetUniformi("st_masked", in.Mask ? 1 : 0);
   program->SetUniformi("st_cropping", in.Cropping ? 1 : 0);
   program->SetUniformi("st_cropFlags", in.CropFlags);
   program->SetUniform3f("st_cropMin", in.CropMin);
@@ -488,8 +517,7 @@ bool vtkScattererTransportVolume::vtkInternals::SweepLight(
   program->SetUniform3f("st_lightPosition", light.Position);
   program->SetUniformi("st_lightPositional", light.Positional ? 1 : 0);
   program->SetUniformi("st_substeps", std::max(1, in.Downsample));
-  in.Volume->Activate();
-  program->SetUniformi("st_volume", in.Volume->GetTextureUnit());
+  BindVolume(program, in);
   this->Medium->Activate();
   program->SetUniformi("st_medium", this->Medium->GetTextureUnit());
 
@@ -537,7 +565,7 @@ bool vtkScattererTransportVolume::vtkInternals::SweepLight(
   }
   DetachAll(this->Framebuffer);
   this->Medium->Deactivate();
-  in.Volume->Deactivate();
+  UnbindVolume(in);
   this->CurrentPlan = plan;
   return true;
 }
@@ -582,8 +610,7 @@ void vtkScattererTransportVolume::vtkInternals::GatherLight(
   program->SetUniform3f("st_lightAttenuation", light.Attenuation);
   program->SetUniformf("st_lightConeCos", light.ConeCos);
   program->SetUniformf("st_lightExponent", light.Exponent);
-  in.Volume->Activate();
-  program->SetUniformi("st_volume", in.Volume->GetTextureUnit());
+  BindVolume(program, in);
   this->Medium->Activate();
   program->SetUniformi("st_medium", this->Medium->GetTextureUnit());
   this->Transmittance->Activate();
@@ -610,7 +637,7 @@ void vtkScattererTransportVolume::vtkInternals::GatherLight(
   this->Materials->Deactivate();
   this->Kernel->Deactivate();
   this->Transmittance->Deactivate();
-  in.Volume->Deactivate();
+  UnbindVolume(in);
 }
 
 bool vtkScattererTransportVolume::vtkInternals::AddScatteredAndAmbientLight(const Inputs& in, std::string& why)
@@ -671,8 +698,7 @@ bool vtkScattererTransportVolume::vtkInternals::AddScatteredAndAmbientLight(cons
     coarsen->SetUniform3f("st_h", h);
     coarsen->SetUniformi("st_aoSteps", 2);
     coarsen->SetUniformi("st_block", block);
-    in.Volume->Activate();
-    coarsen->SetUniformi("st_volume", in.Volume->GetTextureUnit());
+    BindVolume(coarsen, in);
     this->Medium->Activate();
     coarsen->SetUniformi("st_medium", this->Medium->GetTextureUnit());
     this->Source->Activate();
@@ -682,7 +708,7 @@ bool vtkScattererTransportVolume::vtkInternals::AddScatteredAndAmbientLight(cons
     this->StepDone();
     this->Source->Deactivate();
     this->Medium->Deactivate();
-    in.Volume->Deactivate();
+    UnbindVolume(in);
   }
 
   vtkShaderProgram* program = this->Diffuse->Program;
@@ -783,6 +809,8 @@ std::uint64_t KeyOf(const vtkScattererTransportVolume::Inputs& in)
   Fingerprint f;
   f.Add(in.Volume);
   f.Add(in.VolumeUploadTime);
+  f.Add(in.Mask);
+  f.Add(in.MaskUploadTime);
   f.Add(in.ScalarScale);
   f.Add(in.ScalarBias);
   f.Add(in.ExtinctionScale);

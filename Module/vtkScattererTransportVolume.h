@@ -69,6 +69,11 @@ public:
     vtkTextureObject* Volume = nullptr; ///< the ray caster's scalar texture (3D)
     float ScalarScale = 1, ScalarBias = 0; ///< texel -> normalised scalar
     unsigned long VolumeUploadTime = 0;    ///< changes when the texture's content does
+    /// A binary mask on the volume's grid (R, nearest; VTK's convention: a voxel whose
+    /// mask value is 0 is masked out), or none. Masked-out matter neither shows (the ray
+    /// caster's own mask) nor casts shadow or scatters light (here).
+    vtkTextureObject* Mask = nullptr;
+    unsigned long MaskUploadTime = 0; ///< changes when the mask texture's content does
     double TexToWorld[16] = {};   ///< volume texture coordinates -> world (row-major)
     double TexToDataset[16] = {}; ///< volume texture coordinates -> dataset (row-major)
     /// Over the normalised scalar [0, 1], 4 per entry: albedo rgb (the colour transfer

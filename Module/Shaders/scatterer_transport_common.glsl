@@ -28,6 +28,8 @@ uniform int st_cropFlags;          // VTK's 27 region bits
 uniform vec3 st_cropMin;           // dataset coordinates of the cropping planes
 uniform vec3 st_cropMax;
 uniform mat3 st_toSweep;           // grid axis order -> sweep texture order
+uniform int st_masked;             // 1: a binary mask on the volume's grid
+uniform sampler3D st_mask;         // the mask (nearest), VTK's convention: 0 = masked out
 
 vec3 st_gridToTexture(vec3 j)
 {
@@ -40,10 +42,14 @@ float st_scalarAt(vec3 t)
   return texture(st_volume, t).r * st_scalarScale + st_scalarBias;
 }
 
-// Is the material at texture position t kept by the clipping planes and the
-// cropping region? Removed material neither shows nor casts shadow.
+// Is the material at texture position t kept by the binary mask, the clipping
+// planes and the cropping region? Removed material neither shows nor casts shadow.
 bool st_kept(vec3 t)
 {
+  if (st_masked != 0 && texture(st_mask, t).r <= 0.0)
+  {
+    return false;
+  }
   vec4 world = st_texToWorld * vec4(t, 1.0);
   for (int i = 0; i < st_clipCount; ++i)
   {

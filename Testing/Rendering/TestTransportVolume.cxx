@@ -1,7 +1,7 @@
 // The light transport volume against closed forms: Beer-Lambert through a
 // homogeneous slab for axis-aligned, oblique and positional lights; a sphere's
-// shadow on a plate where geometry puts it; no shadow from cropped or clipped
-// material. The transmittance is read back from the GPU (llvmpipe here).
+// shadow on a plate where geometry puts it; no shadow from cropped, clipped or
+// masked-out material. The transmittance is read back from the GPU (llvmpipe here).
 #include "ScattererRenderHarness.h"
 
 #include "vtkCamera.h"
@@ -201,12 +201,15 @@ TEST(TransportVolume, SphereShadowFallsWhereGeometryPutsIt)
   EXPECT_LT(scene.At(t, 30, 24, 4), 0.05) << "the plate casts no shadow on itself";
 }
 
-TEST(TransportVolume, ClippedOrCroppedOccluderCastsNoShadow)
+TEST(TransportVolume, ClippedCroppedOrMaskedOccluderCastsNoShadow)
 {
   const int n = 32;
   // An opaque occluder block z in [20, 25]; light from +z.
   auto image = MakeVolume(n, 1.0, Slab(20, 25));
-  for (int variant = 0; variant < 3; ++variant)
+  // A binary mask that keeps z <= 15 (VTK: 0 = masked out).
+  auto mask = MakeVolume(n, 1.0, [](int, int, int k) -> unsigned char { return k <= 15 ? 1 : 0; });
+  const char* const removal[] = { "", "clipped", "cropped", "masked" };
+  for (int variant = 0; variant < 4; ++variant)
   {
     TransportScene scene(image, 0.95);
     scene.SetDirectional(0, 0, 1);
@@ -223,6 +226,11 @@ TEST(TransportVolume, ClippedOrCroppedOccluderCastsNoShadow)
       scene.Mapper->SetCroppingRegionPlanes(0, 31, 0, 31, 0, 15.5);
       scene.Mapper->SetCroppingRegionFlagsToSubVolume();
     }
+    if (variant == 3)
+    {
+      scene.Mapper->SetMaskInput(mask);
+      scene.Mapper->SetMaskTypeToBinary();
+    }
     const auto t = scene.Transmittance();
     ASSERT_EQ(t.size(), static_cast<size_t>(n * n * n));
     const float below = scene.At(t, 16, 16, 10);
@@ -232,8 +240,7 @@ TEST(TransportVolume, ClippedOrCroppedOccluderCastsNoShadow)
     }
     else
     {
-      EXPECT_GT(below, 0.99) << (variant == 1 ? "clipped" : "cropped")
-                             << " material still casts a shadow";
+      EXPECT_GT(below, 0.99) << removal[variant] << " material still casts a shadow";
     }
   }
 }
