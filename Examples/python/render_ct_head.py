@@ -8,7 +8,8 @@
 The scene is scatterer-render's "ct-head" scene (Examples/Common/ScattererCtHeadScene.cxx):
 skin + bone transfer functions, a fixed camera, one directional scene light.
 Options: --input PATH, --output FILE.png, --size WxH, --mode template|stock,
---no-shadows, --no-bleeding, --strength S. After `cmake --install`, the package is on
+--no-shadows, --no-bleeding, --strength S, --cut-mask (a binary mask removes the skull cap
+and the quarter facing the camera: masked-out matter neither shows nor casts shadow). After `cmake --install`, the package is on
 Python's path (/usr/local/lib/python3.X/dist-packages) and PYTHONPATH is not needed.
 """
 import argparse
@@ -88,6 +89,24 @@ def apply_ct_head_view(renderer):
     return light
 
 
+def quarter_cut_mask(image):
+    """A binary mask on the image's grid: 0 (masked out) in the top third of the slices and,
+    below, where x is below the middle and y above it (the quarter that faces the scene's
+    camera); 255 elsewhere. The scene's light comes from above, so it enters the cut."""
+    from vtkmodules.util.numpy_support import numpy_to_vtk
+    from vtkmodules.vtkCommonDataModel import vtkImageData
+    import numpy
+
+    nx, ny, nz = image.GetDimensions()
+    keep = numpy.full((nz, ny, nx), 255, dtype=numpy.uint8)
+    keep[2 * nz // 3:, :, :] = 0
+    keep[:, ny // 2:, :nx // 2] = 0
+    mask = vtkImageData()
+    mask.CopyStructure(image)
+    mask.GetPointData().SetScalars(numpy_to_vtk(keep.ravel(), deep=True))
+    return mask
+
+
 def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--input", default=os.path.join(data_directory(), "ct-head.mhd"))
@@ -97,6 +116,8 @@ def main(argv):
     parser.add_argument("--no-shadows", action="store_true")
     parser.add_argument("--no-bleeding", action="store_true")
     parser.add_argument("--strength", type=float, default=1.0, help="OcclusionStrength")
+    parser.add_argument("--cut-mask", action="store_true",
+                        help="a binary mask that removes the skull cap and the quarter facing the camera")
     args = parser.parse_args(argv)
     width, height = (int(v) for v in args.size.lower().split("x"))
     if not os.environ.get("DISPLAY"):
@@ -121,6 +142,10 @@ def main(argv):
     mapper.SetShadowsEnabled(not args.no_shadows)
     mapper.SetColorBleedingEnabled(not args.no_bleeding)
     mapper.SetOcclusionStrength(args.strength)
+    if args.cut_mask:
+        mask = quarter_cut_mask(reader.GetOutput())
+        mapper.SetMaskInput(mask)
+        mapper.SetMaskTypeToBinary()
 
     volume = vtkVolume()
     volume.SetMapper(mapper)
