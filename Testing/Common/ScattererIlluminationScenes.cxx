@@ -1,5 +1,6 @@
 #include "ScattererIlluminationScenes.h"
 
+#include "Common/ScattererCtHeadScene.h"
 #include "ScattererTestVolumes.h"
 
 #include "vtkCamera.h"
@@ -223,31 +224,16 @@ int RunIlluminationScene(const std::string& name, int argc, char* argv[])
   }
   else if (name == "cthead")
   {
-    const char* dir = std::getenv("SCATTERER_DATA_DIR");
-    const char* home = std::getenv("HOME");
-    const std::string path = dir && *dir ? std::string(dir) + "/ct-head.mhd"
-                                         : std::string(home ? home : ".") +
-        "/.cache/scatterer-template/ct-head.mhd";
     std::string error;
-    image = vtkScattererVolumeReader::ReadVolume(path, &error);
+    image = vtkScattererVolumeReader::ReadVolume(scatterer_examples::CtHeadPath(), &error);
     if (!image)
     {
       std::cerr << error << "\nPrepare the CT head with: bash scripts/prepare-data.sh\n";
       return 1;
     }
-    // The benchmark scene's transfer functions and light (shared/scenes/ct-head.json).
-    vtkNew<vtkPiecewiseFunction> opacity;
-    const double o[][2] = { { -1024, 0 }, { -600, 0 }, { -450, 0.1 }, { -50, 0.1 }, { 0, 0 },
-      { 150, 0 }, { 300, 0.8 }, { 2986, 0.9 } };
-    for (const auto& p : o)
-      opacity->AddPoint(p[0], p[1]);
-    vtkNew<vtkColorTransferFunction> color;
-    const double c[][4] = { { -1024, 0.8, 0.55, 0.42 }, { -600, 0.85, 0.6, 0.45 },
-      { 0, 0.95, 0.75, 0.6 }, { 150, 0.95, 0.85, 0.75 }, { 300, 1, 1, 0.95 }, { 2986, 1, 1, 1 } };
-    for (const auto& p : c)
-      color->AddRGBPoint(p[0], p[1], p[2], p[3]);
-    property->SetScalarOpacity(opacity);
-    property->SetColor(color);
+    // The benchmark scene's transfer functions (where the examples define them) and light.
+    scatterer_examples::ApplyTransferPoints(
+      scatterer_examples::CtHeadTransferPoints(), 0.0, 1.0, property);
     property->SetAmbient(0.1);
     property->SetDiffuse(0.9);
     property->SetInterpolationTypeToLinear();
