@@ -28,6 +28,7 @@ struct SCATTERERTEMPLATE_EXPORT Features
   bool Blend2 = false;     ///< average two templates per sample
   bool Phong = false;      ///< keep VTK's gradient shading, darkened by the visibility
   bool Transport = true;   ///< read the light transport volume instead of the per-sample photon loop
+  bool LabelMask = false;  ///< colour from VTK's label-map mask (its per-label transfer functions)
 
   bool operator==(const Features& o) const;
   bool operator!=(const Features& o) const { return !(*this == o); }

@@ -405,10 +405,6 @@ std::string Unsupported(vtkScattererTemplateVolumeMapper* mapper, vtkVolume* vol
   {
     return "a rectilinear-grid input";
   }
-  if (mapper->GetMaskInput() && mapper->GetMaskType() != vtkGPUVolumeRayCastMapper::BinaryMaskType)
-  {
-    return "a label-map mask";
-  }
   if (mapper->GetMaskInput() &&
     mapper->GetIlluminationMode() != vtkScattererTemplateVolumeMapper::TRANSPORT)
   {
@@ -589,7 +585,34 @@ std::string vtkScattererTemplateVolumeMapper::PlanFrame(
     derivation[0] = this->MaterialDerivationRange[0];
     derivation[1] = this->MaterialDerivationRange[1];
   }
-  plan.Materials = scatterer_scene::BuildMaterials(in.Requested, property, range, derivation);
+  // With a label-map mask, what is visible is what any label's opacity function (or the
+  // volume's own, label 0) makes visible: materials are derived from their maximum.
+  vtkVolumeProperty* materialProperty = property;
+  vtkNew<vtkVolumeProperty> labelUnion;
+  if (this->GetMaskInput() && this->GetMaskType() == LabelMapMaskType)
+  {
+    vtkNew<vtkPiecewiseFunction> visible;
+    const std::set<int> labels = property->GetLabelMapLabels();
+    const int samples = 256;
+    for (int i = 0; i < samples; ++i)
+    {
+      const double x = derivation[0] + (derivation[1] - derivation[0]) * i / (samples - 1.0);
+      double alpha = property->GetScalarOpacity(0)->GetValue(x);
+      for (int label : labels)
+      {
+        if (vtkPiecewiseFunction* o = property->GetLabelScalarOpacity(label))
+        {
+          alpha = std::max(alpha, o->GetValue(x));
+        }
+      }
+      visible->AddPoint(x, alpha);
+    }
+    labelUnion->SetColor(property->GetRGBTransferFunction(0));
+    labelUnion->SetScalarOpacity(visible);
+    labelUnion->SetScalarOpacityUnitDistance(property->GetScalarOpacityUnitDistance());
+    materialProperty = labelUnion;
+  }
+  plan.Materials = scatterer_scene::BuildMaterials(in.Requested, materialProperty, range, derivation);
   in.ActiveMaterials = static_cast<int>(plan.Materials.Materials.size());
   if (plan.Materials.Materials.empty())
   {
@@ -652,6 +675,7 @@ std::string vtkScattererTemplateVolumeMapper::PlanFrame(
   f.Positional = plan.Lights.AnyPositional;
   f.Blend2 = !f.Transport && this->TemplateBlendingEnabled;
   f.Phong = property->GetShade() != 0;
+  f.LabelMask = this->GetMaskInput() && this->GetMaskType() == LabelMapMaskType;
   if (automatic && !f.Shadow && !f.Bleed && !f.Boundary)
   {
     return "no illumination effect is switched on";
@@ -746,10 +770,13 @@ std::string vtkScattererTemplateVolumeMapper::UpdateTransport(
   t.ScalarScale = volumeTexture->HandleLargeDataTypes ? 1.0f : volumeTexture->Scale[0];
   t.ScalarBias = volumeTexture->HandleLargeDataTypes ? 0.0f : volumeTexture->Bias[0];
   t.VolumeUploadTime = volumeTexture->UploadTime.GetMTime();
-  // A binary mask (Unsupported refused the other kinds): masked-out matter neither
-  // shows (the ray caster's mask) nor casts shadow or scatters (the transport volume).
+  // A binary mask: masked-out matter neither shows (the ray caster's mask) nor casts
+  // shadow or scatters (the transport volume). A label-map mask: each label's medium
+  // comes from its own transfer functions, in the picture and in the light.
   t.Mask = nullptr;
   t.MaskUploadTime = 0;
+  t.LabelMask = plan.Features.LabelMask;
+  t.MaskBlend = this->GetMaskBlendFactor();
   if (vtkImageData* mask = this->GetMaskInput())
   {
     const int volumeDims[3] = { static_cast<int>(block->TextureObject->GetWidth()),
@@ -810,6 +837,20 @@ std::string vtkScattererTemplateVolumeMapper::UpdateTransport(
                      : property->GetRGBTransferFunction(0)->GetMTime())
             << '|' << gray << '|' << lo << ',' << hi << '|' << unit << '|' << in.TemplateKey
             << '|' << this->PhotonCap << '|' << plan.Radius;
+  // A label-map mask adds one medium row per label: its transfer functions count too.
+  const bool labelMask = plan.Features.LabelMask;
+  tablesKey << '|' << labelMask;
+  if (labelMask)
+  {
+    tablesKey << ',' << property->GetLabelColorMTime().GetMTime() << ','
+              << property->GetLabelScalarOpacityMTime().GetMTime();
+    for (int label : property->GetLabelMapLabels())
+    {
+      vtkColorTransferFunction* c = property->GetLabelColor(label);
+      vtkPiecewiseFunction* o = property->GetLabelScalarOpacity(label);
+      tablesKey << ',' << label << ':' << (c ? c->GetMTime() : 0) << ':' << (o ? o->GetMTime() : 0);
+    }
+  }
   for (const auto& m : mats)
   {
     tablesKey << '|' << m.Physics.selector.lo << ',' << m.Physics.selector.hi << ','
@@ -932,6 +973,39 @@ void vtkScattererTemplateVolumeMapper::UpdateTransportTables(
     }
     t.Medium[4 * i + 3] =
       static_cast<float>(scatterer::extinctionFromOpacity(opacity->GetValue(value), unit));
+  }
+  // A label-map mask: row L holds label L's colour and opacity functions (rows 1..255;
+  // a label without functions is empty, as VTK's label table leaves it).
+  t.MediumRows = 1;
+  if (plan.Features.LabelMask)
+  {
+    t.MediumRows = 256;
+    t.Medium.resize(static_cast<size_t>(4) * tableSize * t.MediumRows, 0.0f);
+    for (int label : property->GetLabelMapLabels())
+    {
+      vtkColorTransferFunction* color = property->GetLabelColor(label);
+      vtkPiecewiseFunction* labelOpacity = property->GetLabelScalarOpacity(label);
+      if (label < 1 || label > 255 || !labelOpacity)
+      {
+        continue;
+      }
+      float* row = t.Medium.data() + static_cast<size_t>(4) * tableSize * label;
+      for (int i = 0; i < tableSize; ++i)
+      {
+        const double value = lo + (hi - lo) * i / (tableSize - 1.0);
+        double rgb[3] = { 1.0, 1.0, 1.0 };
+        if (color)
+        {
+          color->GetColor(value, rgb);
+        }
+        for (int c = 0; c < 3; ++c)
+        {
+          row[4 * i + c] = static_cast<float>(std::min(std::max(rgb[c], 0.0), 1.0));
+        }
+        row[4 * i + 3] =
+          static_cast<float>(scatterer::extinctionFromOpacity(labelOpacity->GetValue(value), unit));
+      }
+    }
   }
   const double tableRange[2] = { lo, hi };
   t.MaterialTable = scatterer_scene::MaterialTable(plan.Materials, tableRange, tableSize);

@@ -28,9 +28,11 @@
  * text changes.
  *
  * Illumination applies to composite blending of single-component scalars
- * (intensities or label maps) in one block, with or without a binary mask
- * (transport mode: masked-out matter neither shows nor casts shadow). Other blend
- * modes, multi-component data, label-map masks, a mask in per-sample mode,
+ * (intensities or label maps) in one block, with or without a mask in transport
+ * mode: a binary mask's masked-out matter neither shows nor casts shadow; with a
+ * label-map mask each label's colour and opacity functions (vtkVolumeProperty
+ * SetLabelColor / SetLabelScalarOpacity, labels 1..255) colour the picture and carry
+ * the light. Other blend modes, multi-component data, a mask in per-sample mode,
  * multi-volumes, partitioned volumes, rectilinear grids, depth-pass and 2D
  * transfer functions render as the stock mapper does, with one warning if
  * illumination was asked for.

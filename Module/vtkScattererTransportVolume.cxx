@@ -445,7 +445,10 @@ void vtkScattererTransportVolume::vtkInternals::SetCommonUniforms(
   }
   program->SetUniform4fv("st_clipPlanes", 6, clip);
   program->SetUniformi("st_clipCount", planes);
-  program->SetUniformi("st_masked", in.Mask ? 1 : 0);
+  program->SetUniformi("st_masked", in.Mask && !in.LabelMask ? 1 : 0);
+  program->SetUniformi("st_labelMasked", in.Mask && in.LabelMask ? 1 : 0);
+  program->SetUniformf("st_maskBlend", in.MaskBlend);
+  program->SetUniformf("st_mediumRows", static_cast<float>(std::max(1, in.MediumRows)));
   program->SetUniformi("st_cropping", in.Cropping ? 1 : 0);
   program->SetUniformi("st_cropFlags", in.CropFlags);
   program->SetUniform3f("st_cropMin", in.CropMin);
@@ -811,6 +814,9 @@ std::uint64_t KeyOf(const vtkScattererTransportVolume::Inputs& in)
   f.Add(in.VolumeUploadTime);
   f.Add(in.Mask);
   f.Add(in.MaskUploadTime);
+  f.Add(in.LabelMask);
+  f.Add(in.MaskBlend);
+  f.Add(in.MediumRows);
   f.Add(in.ScalarScale);
   f.Add(in.ScalarBias);
   f.Add(in.ExtinctionScale);
@@ -960,8 +966,9 @@ bool vtkScattererTransportVolume::Update(
     s.Framebuffer->SetContext(window);
   }
   s.Medium = s.NewTexture(true, vtkTextureObject::ClampToEdge);
-  s.Medium->Create2DFromRaw(static_cast<unsigned int>(in.Medium.size() / 4), 1, 4, VTK_FLOAT,
-    const_cast<float*>(in.Medium.data()));
+  const int rows = std::max(1, in.MediumRows);
+  s.Medium->Create2DFromRaw(static_cast<unsigned int>(in.Medium.size() / (4 * rows)),
+    static_cast<unsigned int>(rows), 4, VTK_FLOAT, const_cast<float*>(in.Medium.data()));
   const int materials = std::max<int>(1, static_cast<int>(in.MaterialColors.size() / 3));
   std::vector<float> table(in.MaterialTable);
   if (table.empty())

@@ -74,11 +74,18 @@ public:
     /// caster's own mask) nor casts shadow or scatters light (here).
     vtkTextureObject* Mask = nullptr;
     unsigned long MaskUploadTime = 0; ///< changes when the mask texture's content does
+    /// The mask is a label map (VTK's LabelMapMaskType) rather than binary: a voxel's
+    /// medium is row `label` of Medium (0: the volume's own transfer functions), mixed
+    /// with row 0 by MaskBlend as VTK mixes the colours.
+    bool LabelMask = false;
+    float MaskBlend = 1;
     double TexToWorld[16] = {};   ///< volume texture coordinates -> world (row-major)
     double TexToDataset[16] = {}; ///< volume texture coordinates -> dataset (row-major)
     /// Over the normalised scalar [0, 1], 4 per entry: albedo rgb (the colour transfer
-    /// function) and sigma_t per world unit (the opacity transfer function).
+    /// function) and sigma_t per world unit (the opacity transfer function); MediumRows
+    /// rows of equal length (a label-map mask: one per label value, 0..255).
     std::vector<float> Medium;
+    int MediumRows = 1;
     float ExtinctionScale = 1;     ///< OcclusionStrength
     std::vector<float> ClipPlanes; ///< 4 per plane (world): kept where n.p + d >= 0
     bool Cropping = false;

@@ -7,11 +7,34 @@
       vec4 scalar = texture3D(in_volume[0], g_dataPos);
       scalar.r = scalar.r * in_volume_scale[0].r + in_volume_bias[0].r;
       scalar = vec4(scalar.r);
+//ST::IF LABELMASK
+      // VTK 9.1's label-map mask (vtkVolumeShaderComposer, CompositeMaskImplementation):
+      // label 0, or a blend factor of 0, takes the volume's own transfer functions; any
+      // other label its row of in_labelMapTransfer (colour and opacity over the scalar),
+      // mixed by in_maskBlendFactor. That colour is then lit like any other.
+      float st_opacity = computeOpacity(scalar);
+      g_srcColor = computeColor(scalar, st_opacity);
+      if (in_maskBlendFactor > 0.0 && in_labelMapNumLabels > 0)
+        {
+        float st_labelRow = texture3D(in_mask, g_dataPos).r * in_mask_scale + in_mask_bias;
+        st_labelRow = floor(st_labelRow * float(in_labelMapNumLabels)) / float(in_labelMapNumLabels);
+        if (st_labelRow != 0.0)
+          {
+          vec4 st_labelColor = texture2D(in_labelMapTransfer, vec2(scalar.r, st_labelRow));
+          g_srcColor = in_maskBlendFactor < 1.0
+            ? (1.0 - in_maskBlendFactor) * g_srcColor + in_maskBlendFactor * st_labelColor
+            : st_labelColor;
+          }
+        }
+      if (g_srcColor.a > 0.0)
+        {
+//ST::ELSE
       g_srcColor = vec4(0.0);
       g_srcColor.a = computeOpacity(scalar);
       if (g_srcColor.a > 0.0)
         {
         g_srcColor = computeColor(scalar, g_srcColor.a);
+//ST::ENDIF
 //ST::IF PERSAMPLE
         int st_m = st_material(scalar.r);
 //ST::ELSE

@@ -29,7 +29,10 @@ uniform vec3 st_cropMin;           // dataset coordinates of the cropping planes
 uniform vec3 st_cropMax;
 uniform mat3 st_toSweep;           // grid axis order -> sweep texture order
 uniform int st_masked;             // 1: a binary mask on the volume's grid
-uniform sampler3D st_mask;         // the mask (nearest), VTK's convention: 0 = masked out
+uniform int st_labelMasked;        // 1: a label-map mask: the medium's row is the label
+uniform sampler3D st_mask;         // the mask (nearest, 8-bit): binary 0 = masked out, or labels
+uniform float st_maskBlend;        // label-map mask: VTK's MaskBlendFactor
+uniform float st_mediumRows;       // rows of st_medium (1, or 256 with a label-map mask)
 
 vec3 st_gridToTexture(vec3 j)
 {
@@ -83,7 +86,18 @@ vec4 st_mediumAt(vec3 t)
     return vec4(0.0);
   }
   float s = clamp(st_scalarAt(t), 0.0, 1.0);
-  return texture(st_medium, vec2(s, 0.5));
+  vec4 own = texture(st_medium, vec2(s, 0.5 / st_mediumRows));
+  if (st_labelMasked != 0)
+  {
+    // Row = the label value (0: the volume's own transfer functions), mixed with row 0
+    // by the blend factor as VTK mixes colour and opacity.
+    float label = floor(texture(st_mask, t).r * 255.0 + 0.5);
+    if (label > 0.0)
+    {
+      return mix(own, texture(st_medium, vec2(s, (label + 0.5) / st_mediumRows)), st_maskBlend);
+    }
+  }
+  return own;
 }
 
 // The extinction that attenuates light on its way (the sweep): sigma_t times

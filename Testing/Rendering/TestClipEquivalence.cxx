@@ -73,12 +73,15 @@ enum class Mode
 enum class Removal
 {
   None,
-  Clip, // a clipping plane
-  Mask  // a binary mask, 0 beyond the cut
+  Clip,     // a clipping plane
+  Mask,     // a binary mask, 0 beyond the cut
+  LabelMask // a label-map mask: label 1 (the volume's own functions) up to the cut,
+            // label 2 (zero opacity) beyond
 };
 
-// The binary mask of Removal::Mask: 255 up to the cut, 0 beyond.
-vtkSmartPointer<vtkImageData> MaskBeyondCut()
+// The mask of Removal::Mask (binary: 255 up to the cut, 0 beyond) or Removal::LabelMask
+// (labels 1 up to the cut, 2 beyond).
+vtkSmartPointer<vtkImageData> MaskBeyondCut(bool labels = false)
 {
   auto mask = vtkSmartPointer<vtkImageData>::New();
   mask->SetDimensions(N, N, N);
@@ -87,7 +90,7 @@ vtkSmartPointer<vtkImageData> MaskBeyondCut()
   for (int k = 0; k < N; ++k)
     for (int j = 0; j < N; ++j)
       for (int i = 0; i < N; ++i)
-        *p++ = i > kCut ? 0 : 255;
+        *p++ = labels ? (i > kCut ? 2 : 1) : (i > kCut ? 0 : 255);
   return mask;
 }
 
@@ -124,11 +127,23 @@ std::vector<unsigned char> Render(vtkImageData* image, Removal removal, Mode mod
     plane->SetNormal(-1, 0, 0);
     mapper->AddClippingPlane(plane);
   }
-  const auto mask = MaskBeyondCut();
+  const auto mask = MaskBeyondCut(removal == Removal::LabelMask);
   if (removal == Removal::Mask)
   {
     mapper->SetMaskInput(mask);
     mapper->SetMaskTypeToBinary();
+  }
+  vtkNew<vtkPiecewiseFunction> transparent;
+  transparent->AddPoint(0, 0.0);
+  transparent->AddPoint(255, 0.0);
+  if (removal == Removal::LabelMask)
+  {
+    mapper->SetMaskInput(mask);
+    mapper->SetMaskTypeToLabelMap();
+    property->SetLabelColor(1, color);
+    property->SetLabelScalarOpacity(1, opacity);
+    property->SetLabelColor(2, color);
+    property->SetLabelScalarOpacity(2, transparent);
   }
   vtkNew<vtkVolume> volume;
   volume->SetMapper(mapper);
@@ -231,6 +246,25 @@ TEST(ClipEquivalence, MaskedVolumeWithIlluminationOffIsStock)
   const auto whole = Ball(false);
   const auto off = Render(whole, Removal::Mask, Mode::IlluminationOff);
   const auto stock = Render(whole, Removal::Mask, Mode::Stock);
+  ASSERT_GT(scatterer_testing::MeanBrightness(stock), 5.0) << "the ball is visible";
+  EXPECT_EQ(scatterer_testing::MaxDifference(off, stock), 0);
+}
+
+// A label-map mask: each label's colour and opacity come from its own functions, in the
+// picture and in the light; a label with zero opacity neither shows nor casts shadow.
+// Here label 1 has the volume's functions and label 2 none beyond the cut: lit exactly
+// like the zeroed ball (issue 14).
+TEST(ClipEquivalence, ZeroOpacityLabelIsLitLikeZeroedVoxels)
+{
+  ExpectLitLikeZeroed(Removal::LabelMask);
+}
+
+// With its illumination off, the mapper renders a label-map masked volume as stock does.
+TEST(ClipEquivalence, LabelMaskedVolumeWithIlluminationOffIsStock)
+{
+  const auto whole = Ball(false);
+  const auto off = Render(whole, Removal::LabelMask, Mode::IlluminationOff);
+  const auto stock = Render(whole, Removal::LabelMask, Mode::Stock);
   ASSERT_GT(scatterer_testing::MeanBrightness(stock), 5.0) << "the ball is visible";
   EXPECT_EQ(scatterer_testing::MaxDifference(off, stock), 0);
 }
