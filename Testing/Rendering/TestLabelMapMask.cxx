@@ -1,0 +1,143 @@
+// A label-map mask with 200 labels (issue 14: more labels than the 8 materials, so the
+// per-label medium lives in a table, not in material slots): the illumination applies,
+// leaves no black hole where the stock mapper shows something, and every label keeps
+// its own colour (the last label, 200, is the only red one and shows red).
+#include "ScattererRenderHarness.h"
+
+#include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkOpenGLGPUVolumeRayCastMapper.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkRenderer.h"
+#include "vtkScattererTemplateVolumeMapper.h"
+#include "vtkSmartPointer.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+namespace
+{
+constexpr int N = 48;
+constexpr int Labels = 200;
+
+// A cube of value 200; the mask gives each 1-voxel slab along x and y its own label
+// (1..199), and the front quarter (i < 12) label 200.
+vtkSmartPointer<vtkImageData> Grid(bool mask)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(N, N, N);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+  auto* p = static_cast<unsigned char*>(image->GetScalarPointer());
+  for (int k = 0; k < N; ++k)
+    for (int j = 0; j < N; ++j)
+      for (int i = 0; i < N; ++i)
+      {
+        const bool inside = i > 4 && i < N - 5 && j > 4 && j < N - 5 && k > 4 && k < N - 5;
+        if (!mask)
+          *p++ = inside ? 200 : 0;
+        else
+          *p++ = i < 12 ? Labels : static_cast<unsigned char>(1 + (i * 7 + j * 13) % (Labels - 1));
+      }
+  return image;
+}
+
+std::vector<unsigned char> Render(bool ours)
+{
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(0, 0.0);
+  opacity->AddPoint(100, 0.0);
+  opacity->AddPoint(200, 0.3);
+  opacity->AddPoint(255, 0.3);
+  vtkNew<vtkColorTransferFunction> grey;
+  grey->AddRGBPoint(0, 0.8, 0.8, 0.8);
+  grey->AddRGBPoint(255, 0.8, 0.8, 0.8);
+  vtkNew<vtkVolumeProperty> property;
+  property->SetScalarOpacity(opacity);
+  property->SetColor(grey);
+  property->SetScalarOpacityUnitDistance(1.0);
+  property->SetInterpolationTypeToNearest();
+  std::vector<vtkSmartPointer<vtkColorTransferFunction>> colors;
+  for (int label = 1; label <= Labels; ++label)
+  {
+    // Labels 1..199 green to blue; label 200 red.
+    auto c = vtkSmartPointer<vtkColorTransferFunction>::New();
+    const double t = (label - 1) / double(Labels - 2);
+    if (label == Labels)
+      c->AddRGBPoint(0, 1.0, 0.1, 0.1);
+    else
+      c->AddRGBPoint(0, 0.1, 1.0 - 0.8 * t, 0.2 + 0.8 * t);
+    colors.push_back(c);
+    property->SetLabelColor(label, c);
+    property->SetLabelScalarOpacity(label, opacity);
+  }
+  vtkNew<vtkScattererTemplateVolumeMapper> scatterer;
+  vtkNew<vtkOpenGLGPUVolumeRayCastMapper> stock;
+  vtkGPUVolumeRayCastMapper* mapper = ours ? static_cast<vtkGPUVolumeRayCastMapper*>(scatterer)
+                                           : static_cast<vtkGPUVolumeRayCastMapper*>(stock);
+  const auto data = Grid(false);
+  const auto mask = Grid(true);
+  mapper->SetInputData(data);
+  mapper->SetMaskInput(mask);
+  mapper->SetMaskTypeToLabelMap();
+  mapper->AutoAdjustSampleDistancesOff();
+  mapper->SetSampleDistance(0.5);
+  mapper->UseJitteringOff();
+  vtkNew<vtkVolume> volume;
+  volume->SetMapper(mapper);
+  volume->SetProperty(property);
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddVolume(volume);
+  renderer->AutomaticLightCreationOff();
+  // From the camera's side: every face the camera sees is lit, so a black pixel there
+  // is a hole, not a shadow.
+  scatterer_testing::AddSceneLight(renderer, -1.0, -0.7, 0.5);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  const double c = 0.5 * (N - 1);
+  camera->SetFocalPoint(c, c, c);
+  camera->SetPosition(c - 100, c - 70, c + 50);
+  camera->SetViewUp(0, 0, 1);
+  renderer->ResetCamera();
+  auto pixels = scatterer_testing::RenderSceneOnce(renderer, mapper);
+  if (ours)
+  {
+    EXPECT_NE(scatterer->GetLastShaderFeatures().find("labelmask"), std::string::npos)
+      << scatterer->GetLastShaderFeatures();
+  }
+  return pixels;
+}
+}
+
+TEST(LabelMapMask, TwoHundredLabelsAreLitWithoutHolesAndKeepTheirColours)
+{
+  const auto stock = Render(false);
+  const auto lit = Render(true);
+  ASSERT_EQ(stock.size(), lit.size());
+  int shown = 0, holes = 0, redStock = 0, redLit = 0;
+  for (size_t p = 0; p + 3 < stock.size(); p += 4)
+  {
+    const int s = stock[p] + stock[p + 1] + stock[p + 2];
+    const int l = lit[p] + lit[p + 1] + lit[p + 2];
+    if (s > 60)
+    {
+      ++shown;
+      holes += l < 9 ? 1 : 0;
+    }
+    auto red = [](const std::vector<unsigned char>& x, size_t q) {
+      return x[q] > 40 && x[q] > 2 * x[q + 1] && x[q] > 2 * x[q + 2];
+    };
+    redStock += red(stock, p) ? 1 : 0;
+    redLit += red(lit, p) ? 1 : 0;
+  }
+  std::printf("stock shows %d pixels; %d black in the lit picture; red: stock %d, lit %d\n", shown,
+    holes, redStock, redLit);
+  ASSERT_GT(shown, 1000) << "the cube is visible";
+  EXPECT_LE(holes, shown / 100) << "black holes where the stock mapper shows the volume";
+  ASSERT_GT(redStock, 200) << "label 200's region shows red in the stock picture";
+  EXPECT_GT(redLit, redStock / 2) << "label 200 lost its own colour";
+  EXPECT_GT(scatterer_testing::MaxDifference(stock, lit), 20) << "no illumination was applied";
+}
