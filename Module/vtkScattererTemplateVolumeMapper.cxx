@@ -143,8 +143,12 @@ struct vtkScattererTemplateVolumeMapper::vtkInternals
   bool ProgressReported = false;
   // Transport mode: the light transport volume (owns its textures and change key).
   vtkNew<vtkScattererTransportVolume> Transport;
-  // Transport mode: the binary mask as the transport volume reads it.
+  // Transport mode: the mask (binary or label map) as the transport volume reads it.
   scatterer_gpu::MaskTexture Mask;
+  // A label-map mask: the opacity that materials are derived from (the largest any label
+  // gives a scalar), and what it was tabulated from.
+  vtkNew<vtkVolumeProperty> LabelUnion;
+  std::string LabelUnionKey;
   // Transport mode: what the transport volume is built from (kept between frames: its
   // tables are rebuilt only when TablesKey changes).
   vtkScattererTransportVolume::Inputs TransportInputs;
@@ -586,31 +590,45 @@ std::string vtkScattererTemplateVolumeMapper::PlanFrame(
     derivation[1] = this->MaterialDerivationRange[1];
   }
   // With a label-map mask, what is visible is what any label's opacity function (or the
-  // volume's own, label 0) makes visible: materials are derived from their maximum.
+  // volume's own, label 0) makes visible: materials are derived from their maximum,
+  // tabulated again only when a function or the range changes (not every frame).
   vtkVolumeProperty* materialProperty = property;
-  vtkNew<vtkVolumeProperty> labelUnion;
   if (this->GetMaskInput() && this->GetMaskType() == LabelMapMaskType)
   {
-    vtkNew<vtkPiecewiseFunction> visible;
     const std::set<int> labels = property->GetLabelMapLabels();
-    const int samples = 256;
-    for (int i = 0; i < samples; ++i)
+    std::ostringstream key;
+    key.precision(17);
+    key << property->GetScalarOpacity(0)->GetMTime() << '|'
+        << property->GetRGBTransferFunction(0)->GetMTime() << '|' << derivation[0] << ','
+        << derivation[1];
+    for (int label : labels)
     {
-      const double x = derivation[0] + (derivation[1] - derivation[0]) * i / (samples - 1.0);
-      double alpha = property->GetScalarOpacity(0)->GetValue(x);
-      for (int label : labels)
-      {
-        if (vtkPiecewiseFunction* o = property->GetLabelScalarOpacity(label))
-        {
-          alpha = std::max(alpha, o->GetValue(x));
-        }
-      }
-      visible->AddPoint(x, alpha);
+      vtkPiecewiseFunction* o = property->GetLabelScalarOpacity(label);
+      key << '|' << label << ':' << (o ? o->GetMTime() : 0);
     }
-    labelUnion->SetColor(property->GetRGBTransferFunction(0));
-    labelUnion->SetScalarOpacity(visible);
-    labelUnion->SetScalarOpacityUnitDistance(property->GetScalarOpacityUnitDistance());
-    materialProperty = labelUnion;
+    if (key.str() != in.LabelUnionKey)
+    {
+      vtkNew<vtkPiecewiseFunction> visible;
+      const int samples = 256;
+      for (int i = 0; i < samples; ++i)
+      {
+        const double x = derivation[0] + (derivation[1] - derivation[0]) * i / (samples - 1.0);
+        double alpha = property->GetScalarOpacity(0)->GetValue(x);
+        for (int label : labels)
+        {
+          if (vtkPiecewiseFunction* o = property->GetLabelScalarOpacity(label))
+          {
+            alpha = std::max(alpha, o->GetValue(x));
+          }
+        }
+        visible->AddPoint(x, alpha);
+      }
+      in.LabelUnion->SetColor(property->GetRGBTransferFunction(0));
+      in.LabelUnion->SetScalarOpacity(visible);
+      in.LabelUnionKey = key.str();
+    }
+    in.LabelUnion->SetScalarOpacityUnitDistance(property->GetScalarOpacityUnitDistance());
+    materialProperty = in.LabelUnion;
   }
   plan.Materials = scatterer_scene::BuildMaterials(in.Requested, materialProperty, range, derivation);
   in.ActiveMaterials = static_cast<int>(plan.Materials.Materials.size());

@@ -89,6 +89,18 @@ def apply_ct_head_view(renderer):
     return light
 
 
+def write_window_png(window, path):
+    """The window's last frame (back buffer) to a PNG."""
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.ReadFrontBufferOff()
+    grab.Update()
+    writer = vtkPNGWriter()
+    writer.SetFileName(path)
+    writer.SetInputConnection(grab.GetOutputPort())
+    writer.Write()
+
+
 def quarter_cut_mask(image):
     """A binary mask on the image's grid: 0 (masked out) in the top third of the slices and,
     below, where x is below the middle and y above it (the quarter that faces the scene's
@@ -165,14 +177,7 @@ def main(argv):
     window.Render()
     elapsed_ms = 1000.0 * (time.perf_counter() - start)
 
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.ReadFrontBufferOff()
-    grab.Update()
-    writer = vtkPNGWriter()
-    writer.SetFileName(args.output)
-    writer.SetInputConnection(grab.GetOutputPort())
-    writer.Write()
+    write_window_png(window, args.output)
     print("%s: %dx%d, %s, first frame %.0f ms (shader: %s)"
           % (args.output, width, height, args.mode, elapsed_ms, mapper.GetLastShaderFeatures()))
     return 0

@@ -21,17 +21,18 @@ import sys
 import time
 
 from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
-from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkRenderingCore import (
     vtkColorTransferFunction,
     vtkRenderer,
     vtkRenderWindow,
     vtkVolume,
     vtkVolumeProperty,
-    vtkWindowToImageFilter,
 )
 
 from scatterertemplate import vtkScattererTemplateVolumeMapper, vtkScattererVolumeReader
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from render_ct_head import write_window_png  # noqa: E402 (after the path is set)
 
 TEMPLATES = "/usr/share/mricron/templates"
 
@@ -137,14 +138,7 @@ def main(argv):
     camera.Azimuth(-float(max(0, args.frames)))
     window.Render()
 
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.ReadFrontBufferOff()
-    grab.Update()
-    writer = vtkPNGWriter()
-    writer.SetFileName(args.output)
-    writer.SetInputConnection(grab.GetOutputPort())
-    writer.Write()
+    write_window_png(window, args.output)
     median = statistics.median(times) if times else float("nan")
     print("%s: %dx%d, %s, %d labels, first frame %.0f ms, orbit frames median %.0f ms (%s)"
           % (args.output, width, height, args.mode, len(labels), first_ms, median,
