@@ -1,7 +1,7 @@
 // The accuracy / time trade-off benchmark (docs/accuracy.md; not part of the tests).
 //
 // For each scene (the CT head at a reduced size, the synthetic shell + plate scene):
-// renders the converged Monte Carlo reference (Module/Reference; cached in OUT as
+// renders the converged Monte Carlo reference (Reference; cached in OUT as
 // reference-<scene>-<spp>spp.vti), then every GPU configuration (stock composite, stock
 // Phong, template illumination over a quality ladder, a brute-force template setting)
 // in one process: a warm-up frame, then N timed frames (median). Error against the

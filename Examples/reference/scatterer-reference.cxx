@@ -1,4 +1,4 @@
-// Renders the Monte Carlo reference (Module/Reference) of a VTK volume scene: the CT
+// Renders the Monte Carlo reference (Reference) of a VTK volume scene: the CT
 // head scene by default (Examples/Common/ScattererCtHeadScene.cxx), the synthetic shell +
 // plate scene, or any volume with the CT head's or the automatic transfer functions. Writes the float image (.vti or
 // .mha: "Radiance" RGB + per-pixel "StandardError") and a PNG, and prints the samples

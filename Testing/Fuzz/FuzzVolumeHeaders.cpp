@@ -2,7 +2,7 @@
 //
 // The input is written as a MetaImage, NRRD or NIfTI file (VolumeHeaderInput.h) in a
 // folder of this process and goes through the header check
-// (Module/ScattererVolumeHeaderCheck.cxx). Whatever the check accepts is then read by
+// (Module/IO/ScattererVolumeHeaderCheck.cxx). Whatever the check accepts is then read by
 // vtkScattererVolumeReader::ReadVolume, i.e. by VTK 9.1's own readers (the system VTK,
 // not instrumented; only this project's sources are). Findings:
 //   - any crash, sanitizer report, uncaught exception, timeout or allocation past the

@@ -1,6 +1,6 @@
 // Accuracy regression: on a small shell + plate scene the mapper's defaults (the light
 // transport volume) must stay clearly closer to the Monte Carlo reference
-// (Module/Reference, rendered here, deterministic by seed) than stock Phong shading,
+// (Reference, rendered here, deterministic by seed) than stock Phong shading,
 // in RMSE and SSIM after the least-squares exposure normalisation of Metrics.h. The
 // plate shadows the shell from the light: Phong has no shadows, so a transport that
 // lost them (a broken sweep, no occlusion) fails here. It does not guard the
