@@ -154,34 +154,37 @@ MaterialSet BuildMaterials(const std::vector<RequestedMaterial>& requested,
   return set;
 }
 
-std::vector<float> SpeedRatios(const MaterialSet& set)
+namespace
+{
+// A row-major materials x materials table of f(material a, material b).
+template <typename PairFunction>
+std::vector<float> PairTable(const MaterialSet& set, PairFunction f)
 {
   const size_t n = set.Materials.size();
-  std::vector<float> ratios(n * n, 1.0f);
+  std::vector<float> table(n * n, 1.0f);
   for (size_t a = 0; a < n; ++a)
   {
     for (size_t b = 0; b < n; ++b)
     {
-      ratios[a * n + b] = static_cast<float>(scatterer::speedRatio(
-        set.Materials[a].Physics.refractiveIndex, set.Materials[b].Physics.refractiveIndex));
+      table[a * n + b] = static_cast<float>(f(set.Materials[a].Physics, set.Materials[b].Physics));
     }
   }
-  return ratios;
+  return table;
+}
+}
+
+std::vector<float> SpeedRatios(const MaterialSet& set)
+{
+  return PairTable(set, [](const scatterer::Material& a, const scatterer::Material& b) {
+    return scatterer::speedRatio(a.refractiveIndex, b.refractiveIndex);
+  });
 }
 
 std::vector<float> OpacityRatios(const MaterialSet& set)
 {
-  const size_t n = set.Materials.size();
-  std::vector<float> ratios(n * n, 1.0f);
-  for (size_t a = 0; a < n; ++a)
-  {
-    for (size_t b = 0; b < n; ++b)
-    {
-      const double oa = set.Materials[a].Physics.opacity, ob = set.Materials[b].Physics.opacity;
-      ratios[a * n + b] = ob > 0 ? static_cast<float>(std::min(1.0, oa / ob)) : 1.0f;
-    }
-  }
-  return ratios;
+  return PairTable(set, [](const scatterer::Material& a, const scatterer::Material& b) {
+    return b.opacity > 0 ? std::min(1.0, a.opacity / b.opacity) : 1.0;
+  });
 }
 
 std::vector<float> MaterialTable(const MaterialSet& set, const double range[2], int size)
