@@ -147,8 +147,7 @@ MaterialSet BuildMaterials(const std::vector<RequestedMaterial>& requested,
     {
       colorTF->GetColor(iv.WeightedScalar / iv.Weight, color);
     }
-    // Denser classes are taken to be optically denser: 1.33 (water-like) upward.
-    const double n = 1.33 + 0.12 * static_cast<double>(k);
+    const double n = scatterer::defaultRefractiveIndex(static_cast<int>(k));
     set.Materials.push_back(Make(lo, hi, iv.MaxAlpha, n, color, dataRange));
   }
   return set;

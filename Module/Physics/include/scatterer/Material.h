@@ -41,6 +41,15 @@ struct Material {
 constexpr double kMinRefractiveIndex = 1e-4;
 constexpr double kMaxRefractiveIndex = 1e4;
 
+// The refractive index a derived material gets when the user gives none: the k-th class
+// (0-based) in order of increasing density is taken to be optically denser, from water's
+// 1.33 upward in steps of 0.12 (soft tissue about 1.4, bone about 1.55). A heuristic for
+// the Snell speed ratios at material boundaries (paper section 3.4), not measured optics.
+inline double defaultRefractiveIndex(int densityRank)
+{
+  return 1.33 + 0.12 * static_cast<double>(densityRank);
+}
+
 // Mean free path lambda in template radii (paper Eq. 2).
 //
 //   lambda = 1 / (sqrt(2) * n_s * sigma)      [kinetic theory, Maxwell-Boltzmann]
