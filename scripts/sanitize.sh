@@ -17,16 +17,9 @@ bash scripts/install-deps.sh
 cmake -S . -B "$build" -DSCATTERER_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DSCATTERER_BUILD_BENCHMARKS=OFF ${CMAKE_ARGS:-} > "$build.configure.log" 2>&1 ||
   { cat "$build.configure.log"; exit 1; }
-# The test programs behind the "unit" label; ScattererReferenceTests (VTK-free) also carries
-# it once Testing/Reference is part of the build, and a label test whose program was not
-# built would fail, so it is built when the target exists.
-targets=(ScattererPhysicsTests ScattererUnitTests ScattererHardCaseTests scatterer-render)
-known="$(cmake --build "$build" --target help 2>/dev/null || true)"
-for optional in ScattererReferenceTests; do
-  if grep -qw -- "$optional" <<< "$known"; then
-    targets+=("$optional")
-  fi
-done
+# The test programs behind the "unit" label, and the programs of the rendering runs below.
+targets=(ScattererPhysicsTests ScattererReferenceTests ScattererUnitTests ScattererHardCaseTests
+  scatterer-render)
 cmake --build "$build" --target "${targets[@]}" -j 2 \
   > "$build/build.log" 2>&1 || { tail -n 60 "$build/build.log"; exit 1; }
 echo "sanitize: built ${targets[*]} in $(( $(date +%s) - start )) s"
