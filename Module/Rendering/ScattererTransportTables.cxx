@@ -2,7 +2,6 @@
 
 #include "ScattererTransportTextures.h"
 
-#include "vtkOpenGLRenderWindow.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 
