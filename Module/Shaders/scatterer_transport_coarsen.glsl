@@ -7,7 +7,7 @@
 // 4 volume voxels, or 2 fine texels at TransportScale 3 and above): its medium
 // (albedo, sigma_t) is the mean of theirs (st_mediumAt at each), its source the mean
 // of theirs (linear fetches at the centres of 2x2x2 sub-blocks). Never one point
-// sample: see vtkScattererTransportVolume.cxx, AddScatteredAndAmbientLight.
+// sample: see ScattererTransportGrid.cxx, CoarseGrid::Over.
 //
 // Its alpha also carries the ambient occlusion of the block centre p: VTK's ambient
 // light comes from every direction, so it is occluded by the medium around p.

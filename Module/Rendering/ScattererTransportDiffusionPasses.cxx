@@ -1,0 +1,143 @@
+#include "ScattererTransportDiffusionPasses.h"
+
+#include "ScattererTransportFramebuffer.h"
+#include "ScattererTransportGrid.h"
+#include "ScattererTransportPass.h"
+#include "ScattererTransportPrograms.h"
+#include "ScattererTransportProgress.h"
+#include "ScattererTransportTables.h"
+#include "ScattererTransportTextures.h"
+
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+
+namespace scatterer_gpu
+{
+namespace
+{
+// The coarse grid as the coarse passes' uniforms.
+struct CoarseUniforms
+{
+  float Dims[3];
+  float ToGrid[3];
+  float H[3]; // coarse texel size along each axis, world units
+
+  CoarseUniforms(const TransportGrid& grid, const CoarseGrid& coarse)
+  {
+    coarse.GetDims(this->Dims);
+    coarse.GetToGrid(this->ToGrid);
+    for (int a = 0; a < 3; ++a)
+    {
+      this->H[a] = static_cast<float>(coarse.Block * grid.TexelLength(a));
+    }
+  }
+};
+
+// Pass 3a: the coarse medium (mean albedo, sigma_t of each block), the coarse source
+// (mean light scattered once) and the ambient occlusion of each block's centre.
+void Coarsen(const TransportPass& pass, const CoarseGrid& coarse, const CoarseUniforms& u)
+{
+  TransportTextures& textures = pass.Textures;
+  vtkShaderProgram* program = UseProgram(pass.Window, pass.Programs.Coarsen.get());
+  SetCommonUniforms(program, pass.Grid, pass.In);
+  program->SetUniform3f("st_coarseDims", u.Dims);
+  program->SetUniform3f("st_coarseToGrid", u.ToGrid);
+  program->SetUniform3f("st_h", u.H);
+  program->SetUniformi("st_aoSteps", 2);
+  program->SetUniformi("st_block", coarse.Block);
+  ScopedVolume volume(program, pass.In);
+  ScopedSampler medium(program, "st_medium", pass.Tables.Medium);
+  ScopedSampler source(program, "st_source", textures.Source);
+  DrawLayers(pass.Framebuffer, pass.Programs.Coarsen.get(), program,
+    { textures.CoarseMedium, textures.CoarseSource }, coarse.Dims[2]);
+  pass.Progress.StepDone();
+}
+
+// Pass 3: Jacobi iterations of the diffusion equation, ping-pong between the two fluence
+// grids. Returns the grid holding the last iteration's phi.
+vtkTextureObject* Diffuse(
+  const TransportPass& pass, const CoarseGrid& coarse, const CoarseUniforms& u, int iterations)
+{
+  TransportTextures& textures = pass.Textures;
+  vtkShaderProgram* program = UseProgram(pass.Window, pass.Programs.Diffuse.get());
+  program->SetUniform3f("st_coarseDims", u.Dims);
+  program->SetUniform3f("st_h", u.H);
+  ScopedSampler medium(program, "st_coarseMedium", textures.CoarseMedium);
+  ScopedSampler source(program, "st_coarseSource", textures.CoarseSource);
+  int current = 0;
+  for (int i = 0; i < iterations; ++i)
+  {
+    {
+      ScopedSampler previous(program, "st_previous", textures.Fluence[1 - current]);
+      program->SetUniformi("st_first", i == 0 ? 1 : 0);
+      DrawLayers(pass.Framebuffer, pass.Programs.Diffuse.get(), program,
+        { textures.Fluence[current] }, coarse.Dims[2]);
+    }
+    current = 1 - current;
+    pass.Progress.StepDone();
+  }
+  return textures.Fluence[1 - current];
+}
+
+// Pass 4: the fluence times MultipleScattering and the lights' ambient term times its
+// occlusion, both interpolated from the coarse grid, added to each fine texel's light.
+void Combine(const TransportPass& pass, const CoarseGrid& coarse, const CoarseUniforms& u,
+  vtkTextureObject* fluence)
+{
+  const vtkScattererTransportVolume::Inputs& in = pass.In;
+  vtkShaderProgram* program = UseProgram(pass.Window, pass.Programs.Combine.get());
+  ScopedSampler phi(program, "st_fluence", fluence);
+  ScopedSampler occlusion(program, "st_occlusion", pass.Textures.CoarseSource);
+  float ambient[3] = { 0, 0, 0 };
+  for (const auto& light : in.Lights)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      ambient[c] += light.Ambient[c];
+    }
+  }
+  program->SetUniform3f("st_ambient", ambient);
+  float dims[3];
+  pass.Grid.GetDims(dims);
+  program->SetUniform3f("st_gridDims", dims);
+  program->SetUniform3f("st_coarseDims", u.Dims);
+  program->SetUniform3f("st_coarseToGrid", u.ToGrid);
+  program->SetUniformf("st_block", static_cast<float>(coarse.Block));
+  program->SetUniformf("st_strength", in.MultipleScattering);
+  vtkOpenGLState* state = pass.Window->GetState();
+  BlendAdditively(state);
+  state->vtkglViewport(0, 0, pass.Grid.Dims[0], pass.Grid.Dims[1]);
+  DrawLayers(pass.Framebuffer, pass.Programs.Combine.get(), program, { pass.Textures.Light },
+    pass.Grid.Dims[2]);
+  state->vtkglDisable(GL_BLEND);
+}
+}
+
+int DiffusionIterations(const vtkScattererTransportVolume::Inputs& in)
+{
+  return in.MultipleScattering > 0.0f ? std::max(1, in.DiffusionIterations) : 0;
+}
+
+bool AddScatteredAndAmbientLight(const TransportPass& pass, std::string& why)
+{
+  const CoarseGrid coarse = CoarseGrid::Over(pass.Grid, pass.In.Downsample);
+  if (!pass.Textures.AllocateCoarse(pass.Window, coarse.Dims, why))
+  {
+    return false;
+  }
+  const CoarseUniforms uniforms(pass.Grid, coarse);
+  vtkOpenGLState* state = pass.Window->GetState();
+  state->vtkglDisable(GL_BLEND);
+  state->vtkglViewport(0, 0, coarse.Dims[0], coarse.Dims[1]);
+  Coarsen(pass, coarse, uniforms);
+  vtkTextureObject* fluence = Diffuse(pass, coarse, uniforms, DiffusionIterations(pass.In));
+  Combine(pass, coarse, uniforms, fluence);
+  return true;
+}
+}

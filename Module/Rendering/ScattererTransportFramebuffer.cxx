@@ -1,0 +1,82 @@
+#include "ScattererTransportFramebuffer.h"
+
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+namespace scatterer_gpu
+{
+TransportPassState::TransportPassState(
+  vtkOpenGLRenderWindow* window, vtkOpenGLFramebufferObject* framebuffer)
+  : State(window->GetState())
+  , Viewport(State)
+  , Blend(State, GL_BLEND)
+  , Depth(State, GL_DEPTH_TEST)
+  , Scissor(State, GL_SCISSOR_TEST)
+  , BlendFunc(State)
+{
+  this->State->vtkglDisable(GL_BLEND);
+  this->State->vtkglDisable(GL_DEPTH_TEST);
+  this->State->vtkglDisable(GL_SCISSOR_TEST);
+  this->State->PushFramebufferBindings();
+  framebuffer->Bind();
+}
+
+TransportPassState::~TransportPassState()
+{
+  this->State->PopFramebufferBindings();
+}
+
+// Attachments go straight to GL: vtkOpenGLFramebufferObject keeps an attachment of the
+// same texture as it is, whatever the layer, and its bookkeeping costs more than the draw.
+void AttachLayer(unsigned int index, vtkTextureObject* texture, int layer)
+{
+  glFramebufferTextureLayer(
+    GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + index, texture->GetHandle(), 0, layer);
+}
+
+void Attach2D(unsigned int index, vtkTextureObject* texture)
+{
+  glFramebufferTexture2D(
+    GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + index, GL_TEXTURE_2D, texture->GetHandle(), 0);
+}
+
+void DetachAll(vtkOpenGLFramebufferObject* framebuffer)
+{
+  // The passes use at most two attachments.
+  for (unsigned int index = 0; index < 2; ++index)
+  {
+    glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + index, GL_TEXTURE_2D, 0, 0);
+  }
+  framebuffer->ActivateDrawBuffers(1);
+}
+
+void DrawLayers(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLQuadHelper* quad,
+  vtkShaderProgram* program, std::initializer_list<vtkTextureObject*> targets, int layers)
+{
+  for (int z = 0; z < layers; ++z)
+  {
+    unsigned int index = 0;
+    for (vtkTextureObject* target : targets)
+    {
+      AttachLayer(index++, target, z);
+    }
+    if (z == 0)
+    {
+      framebuffer->ActivateDrawBuffers(index);
+    }
+    program->SetUniformf("st_layer", static_cast<float>(z));
+    quad->Render();
+  }
+  DetachAll(framebuffer);
+}
+
+void BlendAdditively(vtkOpenGLState* state)
+{
+  state->vtkglEnable(GL_BLEND);
+  state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
+}
+}

@@ -1,0 +1,227 @@
+#include "ScattererTransportGrid.h"
+
+#include "vtkMatrix3x3.h"
+#include "vtkNew.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace scatterer_gpu
+{
+namespace
+{
+void Multiply3(const double m[9], const double v[3], double out[3])
+{
+  for (int r = 0; r < 3; ++r)
+  {
+    out[r] = m[3 * r] * v[0] + m[3 * r + 1] * v[1] + m[3 * r + 2] * v[2];
+  }
+}
+}
+
+int FloorDiv(int a, int b)
+{
+  return a >= 0 ? a / b : -((-a + b - 1) / b);
+}
+
+bool TransportGrid::Place(
+  const int volumeDims[3], const int indexOrigin[3], int downsample, const double texToWorld[16])
+{
+  // Every ds-th structured index from index 0; one more at each end covers the
+  // texture's edges.
+  const int ds = std::max(1, downsample);
+  for (int a = 0; a < 3; ++a)
+  {
+    const int n = std::max(1, volumeDims[a]);
+    const int e0 = indexOrigin[a];
+    const int first = FloorDiv(e0, ds), last = FloorDiv(e0 + n - 1 + ds - 1, ds);
+    this->Dims[a] = n < 2 ? 1 : last - first + 1;
+    this->FirstIndex[a] = first;
+    const int m = this->Dims[a];
+    // Texel j sits at index first * ds + j * ds, texture coordinate (index - e0 + 0.5) / n.
+    this->GridToTex[a] = m > 1 ? static_cast<double>(ds) / n : 0.0;
+    this->GridToTexOffset[a] = m > 1 ? (first * ds - e0 + 0.5) / n : 0.5;
+    // Light texture coordinate = (j + 0.5) / M with j = (t - offset) / scale.
+    if (m > 1)
+    {
+      this->TexScale[a] = static_cast<float>(1.0 / (this->GridToTex[a] * m));
+      this->TexOffset[a] =
+        static_cast<float>((0.5 - this->GridToTexOffset[a] / this->GridToTex[a]) / m);
+    }
+    else
+    {
+      this->TexScale[a] = 0.0f;
+      this->TexOffset[a] = 0.5f;
+    }
+    // A flat axis still needs a direction scale: one voxel.
+    const double scale = m > 1 ? this->GridToTex[a] : 1.0 / n;
+    for (int r = 0; r < 3; ++r)
+    {
+      this->GridToWorld[3 * r + a] = texToWorld[4 * r + a] * scale;
+    }
+  }
+  for (int r = 0; r < 3; ++r)
+  {
+    this->GridOriginWorld[r] = texToWorld[4 * r + 3];
+    for (int a = 0; a < 3; ++a)
+    {
+      this->GridOriginWorld[r] += texToWorld[4 * r + a] * this->GridToTexOffset[a];
+    }
+  }
+  vtkNew<vtkMatrix3x3> inverse;
+  for (int i = 0; i < 9; ++i)
+  {
+    inverse->SetElement(i / 3, i % 3, this->GridToWorld[i]);
+  }
+  const double determinant = inverse->Determinant();
+  if (determinant == 0.0 || !std::isfinite(determinant))
+  {
+    return false;
+  }
+  inverse->Invert();
+  for (int i = 0; i < 9; ++i)
+  {
+    this->WorldToGrid[i] = inverse->GetElement(i / 3, i % 3);
+  }
+  return true;
+}
+
+double TransportGrid::TexelLength(int a) const
+{
+  const double* g = this->GridToWorld;
+  return std::sqrt(g[a] * g[a] + g[3 + a] * g[3 + a] + g[6 + a] * g[6 + a]);
+}
+
+void TransportGrid::GetDims(float dims[3]) const
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    dims[a] = static_cast<float>(this->Dims[a]);
+  }
+}
+
+CoarseGrid CoarseGrid::Over(const TransportGrid& grid, int downsample)
+{
+  // Blocks such that a coarse texel spans about 4 volume voxels (the diffusion's reach
+  // per iteration then stays the same). At least 2: a coarse texel's medium is the mean
+  // of its fine texels', and one point sample of the transfer function standing for a
+  // whole block (transport scale 3 or more) let the diffusion pile the bone's colour up
+  // into yellow-green blotches on the CT head; so from scale 3 on a coarse texel spans
+  // 6 or more voxels.
+  CoarseGrid coarse;
+  coarse.Block = std::max(2, 4 / std::max(1, downsample));
+  for (int a = 0; a < 3; ++a)
+  {
+    const int first = grid.FirstIndex[a];
+    const int coarseFirst = FloorDiv(first, coarse.Block);
+    coarse.ToGrid[a] = coarse.Block * coarseFirst - first;
+    coarse.Dims[a] = FloorDiv(first + grid.Dims[a] - 1, coarse.Block) - coarseFirst + 1;
+  }
+  return coarse;
+}
+
+void CoarseGrid::GetDims(float dims[3]) const
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    dims[a] = static_cast<float>(this->Dims[a]);
+  }
+}
+
+void CoarseGrid::GetToGrid(float toGrid[3]) const
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    toGrid[a] = static_cast<float>(this->ToGrid[a]);
+  }
+}
+
+void SweepPlan::GetSweepDims(const TransportGrid& grid, int dims[3]) const
+{
+  dims[0] = grid.Dims[this->Row];
+  dims[1] = grid.Dims[this->Column];
+  dims[2] = grid.Dims[this->Axis];
+}
+
+SweepPlan PlanSweep(const TransportGrid& grid, const vtkScattererTransportVolume::Light& light)
+{
+  SweepPlan plan;
+  double toward[3];
+  double lightGrid[3] = { 0, 0, 0 };
+  if (light.Positional)
+  {
+    double rel[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      rel[a] = light.Position[a] - grid.GridOriginWorld[a];
+    }
+    Multiply3(grid.WorldToGrid, rel, lightGrid);
+    for (int a = 0; a < 3; ++a)
+    {
+      toward[a] = lightGrid[a] - 0.5 * (grid.Dims[a] - 1);
+    }
+  }
+  else
+  {
+    const double w[3] = { light.Toward[0], light.Toward[1], light.Toward[2] };
+    Multiply3(grid.WorldToGrid, w, toward);
+  }
+  plan.Axis = 0;
+  for (int a = 1; a < 3; ++a)
+  {
+    if (std::abs(toward[a]) > std::abs(toward[plan.Axis]))
+    {
+      plan.Axis = a;
+    }
+  }
+  plan.Row = plan.Axis == 0 ? 1 : 0;
+  plan.Column = plan.Axis == 2 ? 1 : 2;
+  const int n = grid.Dims[plan.Axis];
+  if (light.Positional)
+  {
+    // The radial variant: away from the light's own slice, on both sides.
+    const double k = lightGrid[plan.Axis];
+    const int below = static_cast<int>(std::floor(std::min(k, n - 1.0)));
+    if (below >= 0)
+    {
+      plan.Runs.emplace_back(below, 0);
+    }
+    const int above = static_cast<int>(std::max(std::floor(k) + 1.0, 0.0));
+    if (above <= n - 1)
+    {
+      plan.Runs.emplace_back(above, n - 1);
+    }
+  }
+  else if (toward[plan.Axis] > 0.0)
+  {
+    plan.Runs.emplace_back(n - 1, 0);
+  }
+  else
+  {
+    plan.Runs.emplace_back(0, n - 1);
+  }
+  return plan;
+}
+
+std::vector<float> SweepOrderToGridOrder(
+  const TransportGrid& grid, const SweepPlan& plan, const std::vector<float>& sweep)
+{
+  const int* dims = grid.Dims;
+  const size_t w = static_cast<size_t>(dims[plan.Row]), h = static_cast<size_t>(dims[plan.Column]);
+  std::vector<float> ordered(sweep.size());
+  for (int z = 0; z < dims[2]; ++z)
+  {
+    for (int y = 0; y < dims[1]; ++y)
+    {
+      for (int x = 0; x < dims[0]; ++x)
+      {
+        const int j[3] = { x, y, z };
+        const size_t from = j[plan.Row] + w * (j[plan.Column] + h * j[plan.Axis]);
+        ordered[x + static_cast<size_t>(dims[0]) * (y + static_cast<size_t>(dims[1]) * z)] =
+          sweep[from];
+      }
+    }
+  }
+  return ordered;
+}
+}

@@ -1,0 +1,92 @@
+// Where the light transport grid lies and how a light is swept through it: the CPU
+// geometry of vtkScattererTransportVolume, no OpenGL.
+//
+// The grid is every Downsample-th structured index of the volume, anchored to index 0
+// (not to the image's first voxel), so that a piece of a split volume (ParaView with
+// MPI) puts its transport voxels where the whole volume does. Its placement in the
+// world is the ray caster's own (the volume texture's texture -> world matrix).
+#ifndef ScattererTransportGrid_h
+#define ScattererTransportGrid_h
+
+#include "vtkScattererTransportVolume.h" // for Light
+
+#include <utility> // for std::pair
+#include <vector>  // for SweepPlan::Runs
+
+namespace scatterer_gpu
+{
+/** a / b rounded toward minus infinity (b > 0): grids anchored to index 0 for pieces
+ * whose extents start below or above it. */
+int FloorDiv(int a, int b);
+
+/** The fine transport grid: its size, and the maps between its texels, the volume
+ * texture's coordinates and the world. */
+struct TransportGrid
+{
+  int Dims[3] = { 0, 0, 0 };
+  int FirstIndex[3] = { 0, 0, 0 }; ///< global index (in grid texels) of grid texel 0
+  /// Grid texel j -> volume texture coordinate: j * GridToTex + GridToTexOffset.
+  double GridToTex[3] = { 0, 0, 0 };
+  double GridToTexOffset[3] = { 0.5, 0.5, 0.5 };
+  /// Volume texture coordinate t -> light texture coordinate: t * TexScale + TexOffset.
+  float TexScale[3] = { 1, 1, 1 };
+  float TexOffset[3] = { 0, 0, 0 };
+  double GridToWorld[9] = {};              ///< grid-index vector -> world vector (row-major 3x3)
+  double WorldToGrid[9] = {};              ///< its inverse
+  double GridOriginWorld[3] = { 0, 0, 0 }; ///< world position of grid texel 0
+
+  /**
+   * Places the grid on a volume texture of @p volumeDims texels whose first texel is
+   * structured index @p indexOrigin, one grid texel per @p downsample voxels, with
+   * @p texToWorld (row-major 4x4). Returns false when that placement is degenerate
+   * (zero spacing, a singular matrix); the sizes are set all the same.
+   */
+  bool Place(
+    const int volumeDims[3], const int indexOrigin[3], int downsample, const double texToWorld[16]);
+
+  /** World length of one grid texel along grid axis @p a. */
+  double TexelLength(int a) const;
+
+  /** Dims as floats (the passes' uniforms). */
+  void GetDims(float dims[3]) const;
+};
+
+/** The diffusion's coarse grid: blocks of Block^3 fine texels, anchored like the fine
+ * grid (to multiples of Block in global fine indices) so that pieces share it. */
+struct CoarseGrid
+{
+  int Dims[3] = { 0, 0, 0 };
+  int ToGrid[3] = { 0, 0, 0 }; ///< coarse texel c covers fine texels Block c + ToGrid + [0, Block)
+  int Block = 2;               ///< fine texels per coarse texel along each axis
+
+  /** The coarse grid over @p grid for volume voxels per fine texel @p downsample. */
+  static CoarseGrid Over(const TransportGrid& grid, int downsample);
+
+  void GetDims(float dims[3]) const;
+  void GetToGrid(float toGrid[3]) const;
+};
+
+/** How one light is swept: the grid axis the slices run along (the light's dominant
+ * axis in grid units) and the other two in order. */
+struct SweepPlan
+{
+  int Axis = 2;
+  int Row = 0, Column = 1;
+  /// Slices to sweep, each run starting with T = 1: (first, last) inclusive.
+  std::vector<std::pair<int, int>> Runs;
+
+  /** Texels of the transmittance texture, (rows, columns, slices). */
+  void GetSweepDims(const TransportGrid& grid, int dims[3]) const;
+};
+
+/** The sweep of @p light through @p grid: along its dominant axis away from it (a
+ * directional light), or away from its own slice on both sides (a positional light). */
+SweepPlan PlanSweep(const TransportGrid& grid, const vtkScattererTransportVolume::Light& light);
+
+/** @p sweep (a transmittance texture read back in sweep order, @p plan's) in grid order
+ * (x fastest). */
+std::vector<float> SweepOrderToGridOrder(
+  const TransportGrid& grid, const SweepPlan& plan, const std::vector<float>& sweep);
+}
+
+#endif

@@ -1,0 +1,133 @@
+#include "ScattererTransportLightPasses.h"
+
+#include "ScattererTransportFramebuffer.h"
+#include "ScattererTransportGrid.h"
+#include "ScattererTransportPass.h"
+#include "ScattererTransportPrograms.h"
+#include "ScattererTransportProgress.h"
+#include "ScattererTransportTables.h"
+#include "ScattererTransportTextures.h"
+
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <cstdlib>
+
+namespace scatterer_gpu
+{
+bool SweepTransmittance(const TransportPass& pass, const vtkScattererTransportVolume::Light& light,
+  SweepPlan& swept, std::string& why)
+{
+  const vtkScattererTransportVolume::Inputs& in = pass.In;
+  TransportTextures& textures = pass.Textures;
+  const SweepPlan plan = PlanSweep(pass.Grid, light);
+  int sweepDims[3];
+  plan.GetSweepDims(pass.Grid, sweepDims);
+  if (!textures.AllocateSweep(pass.Window, sweepDims, why))
+  {
+    return false;
+  }
+
+  vtkShaderProgram* program = UseProgram(pass.Window, pass.Programs.Sweep.get());
+  SetCommonUniforms(program, pass.Grid, in);
+  SetSweepOrder(program, plan);
+  const float sweepDimsF[3] = { static_cast<float>(sweepDims[0]), static_cast<float>(sweepDims[1]),
+    static_cast<float>(sweepDims[2]) };
+  program->SetUniform3f("st_sweepDims", sweepDimsF);
+  program->SetUniform3f("st_lightToward", light.Toward);
+  program->SetUniform3f("st_lightPosition", light.Position);
+  program->SetUniformi("st_lightPositional", light.Positional ? 1 : 0);
+  program->SetUniformi("st_substeps", std::max(1, in.Downsample));
+  ScopedVolume volume(program, in);
+  ScopedSampler medium(program, "st_medium", pass.Tables.Medium);
+
+  pass.Window->GetState()->vtkglViewport(0, 0, sweepDims[0], sweepDims[1]);
+  // Progress: kSweepSteps reports per sweep, the last one after the sweep
+  // (TransportProgress::SweepDone).
+  int total = 0;
+  for (const auto& run : plan.Runs)
+  {
+    total += std::abs(run.second - run.first) + 1;
+  }
+  const int chunk = std::max(1, (total + kSweepSteps - 1) / kSweepSteps);
+  int slicesDone = 0;
+  // Each slice is drawn into one slice texture, reading the other (the slice before
+  // it), and copied into its layer of the transmittance texture (a second output).
+  int current = 0;
+  for (const auto& run : plan.Runs)
+  {
+    const int step = run.second >= run.first ? 1 : -1;
+    bool first = true;
+    for (int k = run.first;; k += step)
+    {
+      Attach2D(0, textures.Slices[current]);
+      AttachLayer(1, textures.Transmittance, k);
+      if (first && run.first == plan.Runs.front().first)
+      {
+        pass.Framebuffer->ActivateDrawBuffers(2);
+      }
+      {
+        ScopedSampler previous(program, "st_previous", textures.Slices[1 - current]);
+        program->SetUniformi("st_hasPrevious", first ? 0 : 1);
+        program->SetUniformf("st_slice", static_cast<float>(k));
+        pass.Programs.Sweep->Render();
+      }
+      current = 1 - current;
+      first = false;
+      if (++slicesDone % chunk == 0 && slicesDone < total)
+      {
+        pass.Progress.StepDone();
+      }
+      if (k == run.second)
+      {
+        break;
+      }
+    }
+  }
+  DetachAll(pass.Framebuffer);
+  swept = plan;
+  return true;
+}
+
+void GatherLight(const TransportPass& pass, const vtkScattererTransportVolume::Light& light,
+  const SweepPlan& plan, bool first)
+{
+  const vtkScattererTransportVolume::Inputs& in = pass.In;
+  vtkShaderProgram* program = UseProgram(pass.Window, pass.Programs.Gather.get());
+  SetCommonUniforms(program, pass.Grid, in);
+  SetSweepOrder(program, plan);
+  SetMaterialUniforms(program, in);
+  program->SetUniform3f("st_lightColor", light.Color);
+  program->SetUniform3f("st_lightPosition", light.Position);
+  program->SetUniform3f("st_lightFocalDirection", light.FocalDirection);
+  program->SetUniformi("st_lightPositional", light.Positional ? 1 : 0);
+  program->SetUniform3f("st_lightAttenuation", light.Attenuation);
+  program->SetUniformf("st_lightConeCos", light.ConeCos);
+  program->SetUniformf("st_lightExponent", light.Exponent);
+  ScopedVolume volume(program, in);
+  ScopedSampler medium(program, "st_medium", pass.Tables.Medium);
+  ScopedSampler transmittance(program, "st_transmittance", pass.Textures.Transmittance);
+  ScopedSampler kernel(program, "st_kernel", pass.Tables.Kernel);
+  ScopedSampler materials(program, "st_materialTable", pass.Tables.Materials);
+
+  vtkOpenGLState* state = pass.Window->GetState();
+  state->vtkglViewport(0, 0, pass.Grid.Dims[0], pass.Grid.Dims[1]);
+  // The lights add up: the first replaces, the others blend on.
+  if (first)
+  {
+    state->vtkglDisable(GL_BLEND);
+  }
+  else
+  {
+    BlendAdditively(state);
+  }
+  DrawLayers(pass.Framebuffer, pass.Programs.Gather.get(), program,
+    { pass.Textures.Light, pass.Textures.Source }, pass.Grid.Dims[2]);
+}
+}

@@ -1,0 +1,33 @@
+// What every light transport pass draws with, in one record: the passes
+// (ScattererTransportLightPasses, ScattererTransportDiffusionPasses) take it whole.
+#ifndef ScattererTransportPass_h
+#define ScattererTransportPass_h
+
+#include "vtkScattererTransportVolume.h" // for Inputs
+
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLRenderWindow;
+
+namespace scatterer_gpu
+{
+struct TransportGrid;
+struct TransportPrograms;
+struct TransportTables;
+struct TransportTextures;
+class TransportProgress;
+
+/** The context, programs, inputs and textures of one build's passes. */
+struct TransportPass
+{
+  vtkOpenGLRenderWindow* Window;
+  vtkOpenGLFramebufferObject* Framebuffer; ///< bound (TransportPassState)
+  const TransportPrograms& Programs;
+  const vtkScattererTransportVolume::Inputs& In;
+  const TransportGrid& Grid;
+  const TransportTables& Tables;
+  TransportTextures& Textures; ///< the targets, allocated by the passes as they need
+  TransportProgress& Progress;
+};
+}
+
+#endif

@@ -1,0 +1,195 @@
+#include "ScattererTransportPrograms.h"
+
+#include "ScattererTransportGrid.h"
+
+#include "vtkMatrix3x3.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderUtilities.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+
+#include "scatterer_transport_coarsen.h"
+#include "scatterer_transport_combine.h"
+#include "scatterer_transport_common.h"
+#include "scatterer_transport_diffuse.h"
+#include "scatterer_transport_gather.h"
+#include "scatterer_transport_sweep.h"
+
+#include <algorithm>
+#include <initializer_list>
+
+namespace scatterer_gpu
+{
+namespace
+{
+// The common declarations go where the pass has its tag.
+std::string WithCommon(const char* pass)
+{
+  std::string text = pass;
+  const std::string tag = "//VTK::Transport::Common";
+  const auto at = text.find(tag);
+  if (at != std::string::npos)
+  {
+    text.replace(at, tag.size(), scatterer_transport_common);
+  }
+  return text;
+}
+}
+
+TransportPrograms::TransportPrograms() = default;
+TransportPrograms::~TransportPrograms() = default;
+
+bool TransportPrograms::Create(vtkOpenGLRenderWindow* window, std::string& why)
+{
+  const std::string vs = vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader();
+  auto quad = [&](const std::string& fs)
+  {
+    return std::unique_ptr<vtkOpenGLQuadHelper>(
+      new vtkOpenGLQuadHelper(window, vs.c_str(), fs.c_str(), ""));
+  };
+  this->Sweep = quad(WithCommon(scatterer_transport_sweep));
+  this->Gather = quad(WithCommon(scatterer_transport_gather));
+  this->Coarsen = quad(WithCommon(scatterer_transport_coarsen));
+  this->Diffuse = quad(scatterer_transport_diffuse);
+  this->Combine = quad(scatterer_transport_combine);
+  for (auto* q : { &this->Sweep, &this->Gather, &this->Coarsen, &this->Diffuse, &this->Combine })
+  {
+    if (!(*q)->Program)
+    {
+      why = "the transport shaders failed to compile on this OpenGL implementation";
+      for (auto* p :
+        { &this->Sweep, &this->Gather, &this->Coarsen, &this->Diffuse, &this->Combine })
+      {
+        p->reset();
+      }
+      return false;
+    }
+  }
+  return true;
+}
+
+void TransportPrograms::ReleaseGraphicsResources(vtkWindow* window)
+{
+  for (auto* q : { &this->Sweep, &this->Gather, &this->Coarsen, &this->Diffuse, &this->Combine })
+  {
+    if (*q)
+    {
+      (*q)->ReleaseGraphicsResources(window);
+      q->reset();
+    }
+  }
+}
+
+vtkShaderProgram* UseProgram(vtkOpenGLRenderWindow* window, vtkOpenGLQuadHelper* quad)
+{
+  window->GetShaderCache()->ReadyShaderProgram(quad->Program);
+  return quad->Program;
+}
+
+void SetCommonUniforms(vtkShaderProgram* program, const TransportGrid& grid,
+  const vtkScattererTransportVolume::Inputs& in)
+{
+  program->SetUniformf("st_scalarScale", in.ScalarScale);
+  program->SetUniformf("st_scalarBias", in.ScalarBias);
+  program->SetUniformf("st_extinctionScale", in.ExtinctionScale);
+  float dims[3];
+  grid.GetDims(dims);
+  program->SetUniform3f("st_gridDims", dims);
+  program->SetUniform3f("st_gridToTex", grid.GridToTex);
+  program->SetUniform3f("st_gridToTexOffset", grid.GridToTexOffset);
+  // vtkShaderProgram::SetUniformMatrix hands VTK's row-major elements to GL as
+  // columns (GLSL sees the transpose; VTK's own shaders multiply v * M): transpose
+  // here so that the GLSL reads M * v.
+  vtkNew<vtkMatrix4x4> texToWorld, texToDataset;
+  texToWorld->DeepCopy(in.TexToWorld);
+  texToWorld->Transpose();
+  texToDataset->DeepCopy(in.TexToDataset);
+  texToDataset->Transpose();
+  program->SetUniformMatrix("st_texToWorld", texToWorld);
+  program->SetUniformMatrix("st_texToDataset", texToDataset);
+  // At most 6 planes, as VTK's ray caster.
+  const int planes = static_cast<int>(std::min<size_t>(in.ClipPlanes.size() / 4, 6));
+  float clip[6][4] = {};
+  for (int p = 0; p < planes; ++p)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      clip[p][c] = in.ClipPlanes[4 * p + c];
+    }
+  }
+  program->SetUniform4fv("st_clipPlanes", 6, clip);
+  program->SetUniformi("st_clipCount", planes);
+  program->SetUniformi("st_masked", in.Mask && !in.LabelMask ? 1 : 0);
+  program->SetUniformi("st_labelMasked", in.Mask && in.LabelMask ? 1 : 0);
+  program->SetUniformf("st_maskBlend", in.MaskBlend);
+  program->SetUniformf("st_mediumRows", static_cast<float>(std::max(1, in.MediumRows)));
+  program->SetUniformi("st_cropping", in.Cropping ? 1 : 0);
+  program->SetUniformi("st_cropFlags", in.CropFlags);
+  program->SetUniform3f("st_cropMin", in.CropMin);
+  program->SetUniform3f("st_cropMax", in.CropMax);
+  vtkNew<vtkMatrix3x3> gridToWorld, worldToGrid;
+  for (int i = 0; i < 9; ++i)
+  {
+    gridToWorld->SetElement(i % 3, i / 3, grid.GridToWorld[i]); // transposed, as above
+    worldToGrid->SetElement(i % 3, i / 3, grid.WorldToGrid[i]);
+  }
+  program->SetUniformMatrix("st_worldToGrid", worldToGrid);
+  program->SetUniformMatrix("st_gridToWorld", gridToWorld);
+}
+
+void SetSweepOrder(vtkShaderProgram* program, const SweepPlan& plan)
+{
+  vtkNew<vtkMatrix3x3> toSweep;
+  toSweep->Zero();
+  toSweep->SetElement(plan.Row, 0, 1.0); // transposed, as in SetCommonUniforms
+  toSweep->SetElement(plan.Column, 1, 1.0);
+  toSweep->SetElement(plan.Axis, 2, 1.0);
+  program->SetUniformMatrix("st_toSweep", toSweep);
+}
+
+ScopedSampler::ScopedSampler(
+  vtkShaderProgram* program, const char* sampler, vtkTextureObject* texture)
+  : Texture(texture)
+{
+  texture->Activate();
+  program->SetUniformi(sampler, texture->GetTextureUnit());
+}
+
+ScopedSampler::~ScopedSampler()
+{
+  this->Texture->Deactivate();
+}
+
+ScopedVolume::ScopedVolume(vtkShaderProgram* program, const vtkScattererTransportVolume::Inputs& in)
+  : Volume(in.Volume)
+  , Mask(in.Mask)
+{
+  this->Volume->Activate();
+  program->SetUniformi("st_volume", this->Volume->GetTextureUnit());
+  if (this->Mask)
+  {
+    this->Mask->Activate();
+    program->SetUniformi("st_mask", this->Mask->GetTextureUnit());
+  }
+  else
+  {
+    // Unused (st_masked 0), but a sampler keeps its unit between draws, and a
+    // sampler3D left on a unit where a 2D texture is bound now makes the draw invalid
+    // (GL_INVALID_OPERATION: nothing is drawn). The volume's unit is always 3D.
+    program->SetUniformi("st_mask", this->Volume->GetTextureUnit());
+  }
+}
+
+ScopedVolume::~ScopedVolume()
+{
+  if (this->Mask)
+  {
+    this->Mask->Deactivate();
+  }
+  this->Volume->Deactivate();
+}
+}

@@ -1,0 +1,84 @@
+// The shader programs of the light transport passes (full-screen quads whose fragment
+// shaders are Shaders/scatterer_transport_*.glsl) and what binding them takes: the
+// uniforms every medium-reading pass shares, and scoped texture bindings.
+#ifndef ScattererTransportPrograms_h
+#define ScattererTransportPrograms_h
+
+#include "vtkScattererTransportVolume.h" // for Inputs
+
+#include <memory> // for std::unique_ptr
+#include <string>
+
+class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
+class vtkTextureObject;
+class vtkWindow;
+
+namespace scatterer_gpu
+{
+struct SweepPlan;
+struct TransportGrid;
+
+/** The five pass programs, compiled together once per context. */
+struct TransportPrograms
+{
+  std::unique_ptr<vtkOpenGLQuadHelper> Sweep;   ///< pass 1: transmittance, slice by slice
+  std::unique_ptr<vtkOpenGLQuadHelper> Gather;  ///< pass 2: template in-scattering
+  std::unique_ptr<vtkOpenGLQuadHelper> Coarsen; ///< pass 3a: medium and source, coarse grid
+  std::unique_ptr<vtkOpenGLQuadHelper> Diffuse; ///< pass 3: one Jacobi iteration
+  std::unique_ptr<vtkOpenGLQuadHelper> Combine; ///< pass 4: coarse light added to the fine
+
+  TransportPrograms();
+  ~TransportPrograms();
+
+  bool IsCreated() const { return this->Sweep != nullptr; }
+
+  /** Compiles the programs in @p window; false with @p why set (and none kept) if the
+   * OpenGL implementation refuses one. */
+  bool Create(vtkOpenGLRenderWindow* window, std::string& why);
+
+  void ReleaseGraphicsResources(vtkWindow* window);
+};
+
+/** Makes @p quad's program current in @p window and returns it. */
+vtkShaderProgram* UseProgram(vtkOpenGLRenderWindow* window, vtkOpenGLQuadHelper* quad);
+
+/** The uniforms of scatterer_transport_common.glsl: how to read the medium at a grid
+ * texel (scalar mapping, clipping, cropping, mask) and where the grid lies. */
+void SetCommonUniforms(vtkShaderProgram* program, const TransportGrid& grid,
+  const vtkScattererTransportVolume::Inputs& inputs);
+
+/** st_toSweep: grid order -> @p plan's sweep order (rows, columns, slices). */
+void SetSweepOrder(vtkShaderProgram* program, const SweepPlan& plan);
+
+/** Binds a texture to a sampler of a program for this object's lifetime. */
+class ScopedSampler
+{
+public:
+  ScopedSampler(vtkShaderProgram* program, const char* sampler, vtkTextureObject* texture);
+  ~ScopedSampler();
+  ScopedSampler(const ScopedSampler&) = delete;
+  ScopedSampler& operator=(const ScopedSampler&) = delete;
+
+private:
+  vtkTextureObject* Texture;
+};
+
+/** Binds the scalar texture, and the mask when there is one, to a pass that reads the
+ * medium (st_volume, st_mask), for this object's lifetime. */
+class ScopedVolume
+{
+public:
+  ScopedVolume(vtkShaderProgram* program, const vtkScattererTransportVolume::Inputs& inputs);
+  ~ScopedVolume();
+  ScopedVolume(const ScopedVolume&) = delete;
+  ScopedVolume& operator=(const ScopedVolume&) = delete;
+
+private:
+  vtkTextureObject* Volume;
+  vtkTextureObject* Mask;
+};
+}
+
+#endif

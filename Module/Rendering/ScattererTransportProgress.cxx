@@ -1,0 +1,38 @@
+#include "ScattererTransportProgress.h"
+
+#include "vtk_glew.h"
+
+#include <algorithm>
+
+namespace scatterer_gpu
+{
+void TransportProgress::BeginBuild(int lights, int iterations)
+{
+  this->Done = 0;
+  this->Total = lights * (kSweepSteps + 1) + 2 + iterations; // + coarsening, combine
+  this->Building = true;
+}
+
+void TransportProgress::StepDone()
+{
+  ++this->Done;
+  if (this->Callback && this->Building)
+  {
+    glFinish();
+    this->Callback(std::min(1.0, this->Done / static_cast<double>(this->Total)));
+  }
+}
+
+void TransportProgress::SweepDone(int light)
+{
+  // A sweep of fewer than kSweepSteps slices reports fewer: count it as kSweepSteps.
+  this->Done = light * (kSweepSteps + 1) + kSweepSteps - 1;
+  this->StepDone();
+}
+
+void TransportProgress::BuildDone()
+{
+  this->Done = this->Total - 1;
+  this->StepDone();
+}
+}

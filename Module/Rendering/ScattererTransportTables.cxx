@@ -1,0 +1,81 @@
+#include "ScattererTransportTables.h"
+
+#include "ScattererTransportTextures.h"
+
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+
+#include <algorithm>
+#include <initializer_list>
+#include <vector>
+
+namespace scatterer_gpu
+{
+void TransportTables::Upload(
+  vtkOpenGLRenderWindow* window, const vtkScattererTransportVolume::Inputs& in)
+{
+  // Linear over the scalar, as the ray caster reads its transfer functions.
+  this->Medium = NewTransportTexture(window, true, vtkTextureObject::ClampToEdge);
+  const int rows = std::max(1, in.MediumRows);
+  this->Medium->Create2DFromRaw(static_cast<unsigned int>(in.Medium.size() / (4 * rows)),
+    static_cast<unsigned int>(rows), 4, VTK_FLOAT, const_cast<float*>(in.Medium.data()));
+
+  // Nearest: a scalar belongs to one material or none.
+  std::vector<float> table(in.MaterialTable);
+  if (table.empty())
+  {
+    table.push_back(-1.0f);
+  }
+  this->Materials = NewTransportTexture(window, false, vtkTextureObject::ClampToEdge);
+  this->Materials->Create2DFromRaw(
+    static_cast<unsigned int>(table.size()), 1, 1, VTK_FLOAT, table.data());
+
+  const int materials = std::max<int>(1, static_cast<int>(in.MaterialColors.size() / 3));
+  const int width = std::max(1, in.KernelWidth);
+  std::vector<float> kernel(in.Kernels);
+  kernel.resize(static_cast<size_t>(4 * width * materials), 0.0f);
+  this->Kernel = NewTransportTexture(window, false, vtkTextureObject::ClampToEdge);
+  this->Kernel->Create2DFromRaw(width, materials, 4, VTK_FLOAT, kernel.data());
+}
+
+void TransportTables::ReleaseGraphicsResources(vtkWindow* window)
+{
+  for (auto* t : { &this->Medium, &this->Materials, &this->Kernel })
+  {
+    if (*t)
+    {
+      (*t)->ReleaseGraphicsResources(window);
+      *t = nullptr;
+    }
+  }
+}
+
+void SetMaterialUniforms(vtkShaderProgram* program, const vtkScattererTransportVolume::Inputs& in)
+{
+  const int materials = static_cast<int>(in.MaterialColors.size() / 3);
+  program->SetUniformi("st_materialCount", materials);
+  // The ratio tables of the inputs are materials x materials; the shader's have
+  // kMaxMaterials columns.
+  float colors[kMaxMaterials][3] = {};
+  float speed[kMaxMaterials * kMaxMaterials] = {};
+  float ratio[kMaxMaterials * kMaxMaterials] = {};
+  for (int m = 0; m < materials && m < kMaxMaterials; ++m)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      colors[m][c] = in.MaterialColors[3 * m + c];
+    }
+    for (int k = 0; k < materials && k < kMaxMaterials; ++k)
+    {
+      speed[kMaxMaterials * m + k] = in.SpeedRatios[materials * m + k];
+      ratio[kMaxMaterials * m + k] = in.OpacityRatios[materials * m + k];
+    }
+  }
+  program->SetUniform3fv("st_matColor", kMaxMaterials, colors);
+  program->SetUniform1fv("st_speedRatio", kMaxMaterials * kMaxMaterials, speed);
+  program->SetUniform1fv("st_opacityRatio", kMaxMaterials * kMaxMaterials, ratio);
+  program->SetUniformi("st_kernelCount", in.KernelWidth);
+  program->SetUniformi("st_bleed", in.Bleed ? 1 : 0);
+  program->SetUniformi("st_boundary", in.Boundary ? 1 : 0);
+}
+}

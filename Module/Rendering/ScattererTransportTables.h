@@ -1,0 +1,41 @@
+// The medium and material tables of the light transport volume and their upload: what
+// the passes look up per sample (the medium over the normalised scalar, each scalar's
+// material, each material's scatterer kernel) and the per-material uniforms of the
+// gather (colours, speed and opacity ratios).
+#ifndef ScattererTransportTables_h
+#define ScattererTransportTables_h
+
+#include "vtkScattererTransportVolume.h" // for Inputs
+#include "vtkSmartPointer.h"
+
+class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
+class vtkTextureObject;
+class vtkWindow;
+
+namespace scatterer_gpu
+{
+/** Materials the gather distinguishes (ST_MAX_MATERIALS in scatterer_transport_gather.glsl). */
+constexpr int kMaxMaterials = 8;
+
+/** The table textures, uploaded again for every build. */
+struct TransportTables
+{
+  /// RGBA32F, one row per medium (MediumRows): albedo rgb and sigma_t over the scalar.
+  vtkSmartPointer<vtkTextureObject> Medium;
+  vtkSmartPointer<vtkTextureObject> Materials; ///< R32F: material index over the scalar, -1: none
+  vtkSmartPointer<vtkTextureObject> Kernel;    ///< RGBA32F, photons x materials: offset, weight
+
+  /** Uploads the tables of @p inputs in @p window's context. */
+  void Upload(vtkOpenGLRenderWindow* window, const vtkScattererTransportVolume::Inputs& inputs);
+
+  void ReleaseGraphicsResources(vtkWindow* window);
+};
+
+/** The gather's per-material uniforms: colours, the speed and opacity ratio tables
+ * (kMaxMaterials^2, row = the sample's material), the kernel width and the switches. */
+void SetMaterialUniforms(
+  vtkShaderProgram* program, const vtkScattererTransportVolume::Inputs& inputs);
+}
+
+#endif

@@ -1,0 +1,167 @@
+#include "ScattererTransportTextures.h"
+
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+#include <initializer_list>
+
+namespace scatterer_gpu
+{
+namespace
+{
+bool HasSize(vtkTextureObject* texture, int width, int height, int depth)
+{
+  return texture && texture->GetWidth() == static_cast<unsigned int>(width) &&
+    texture->GetHeight() == static_cast<unsigned int>(height) &&
+    texture->GetDepth() == static_cast<unsigned int>(depth);
+}
+
+size_t Texels(vtkTextureObject* texture)
+{
+  return texture
+    ? static_cast<size_t>(texture->GetWidth()) * texture->GetHeight() * texture->GetDepth()
+    : 0;
+}
+
+// Allocates `texture` as a new RGBA16F 3D texture of `dims` (linear, clamped to edge).
+bool AllocateRGBA16F(
+  vtkOpenGLRenderWindow* window, vtkSmartPointer<vtkTextureObject>& texture, const int dims[3])
+{
+  texture = NewTransportTexture(window, true, vtkTextureObject::ClampToEdge);
+  texture->SetInternalFormat(GL_RGBA16F);
+  texture->SetFormat(GL_RGBA);
+  if (!texture->Allocate3D(dims[0], dims[1], dims[2], 4, VTK_FLOAT))
+  {
+    texture = nullptr; // allocated again next time
+    return false;
+  }
+  return true;
+}
+
+// A new R16F texture (linear) whose border reads 1: outside the grid the light has
+// crossed no matter.
+vtkSmartPointer<vtkTextureObject> NewTransmittance(vtkOpenGLRenderWindow* window)
+{
+  float border[4] = { 1, 1, 1, 1 };
+  auto texture = NewTransportTexture(window, true, vtkTextureObject::ClampToBorder);
+  texture->SetBorderColor(border);
+  texture->SetInternalFormat(GL_R16F);
+  texture->SetFormat(GL_RED);
+  return texture;
+}
+}
+
+vtkSmartPointer<vtkTextureObject> NewTransportTexture(
+  vtkOpenGLRenderWindow* window, bool linear, int wrap)
+{
+  auto t = vtkSmartPointer<vtkTextureObject>::New();
+  t->SetContext(window);
+  t->SetMinificationFilter(linear ? vtkTextureObject::Linear : vtkTextureObject::Nearest);
+  t->SetMagnificationFilter(linear ? vtkTextureObject::Linear : vtkTextureObject::Nearest);
+  t->SetWrapS(wrap);
+  t->SetWrapT(wrap);
+  t->SetWrapR(wrap);
+  return t;
+}
+
+std::vector<float> DownloadTexture3D(vtkTextureObject* texture, int components)
+{
+  std::vector<float> data(Texels(texture) * components);
+  texture->Activate();
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTexImage(GL_TEXTURE_3D, 0, components == 1 ? GL_RED : GL_RGBA, GL_FLOAT, data.data());
+  texture->Deactivate();
+  return data;
+}
+
+bool TransportTextures::AllocateFine(
+  vtkOpenGLRenderWindow* window, const int dims[3], std::string& why)
+{
+  if (HasSize(this->Light, dims[0], dims[1], dims[2]))
+  {
+    return true;
+  }
+  for (auto* texture : { &this->Light, &this->Source })
+  {
+    if (!AllocateRGBA16F(window, *texture, dims))
+    {
+      why = "the light texture could not be allocated";
+      return false;
+    }
+  }
+  return true;
+}
+
+bool TransportTextures::AllocateSweep(
+  vtkOpenGLRenderWindow* window, const int sweepDims[3], std::string& why)
+{
+  const int w = sweepDims[0], h = sweepDims[1], d = sweepDims[2];
+  if (!HasSize(this->Transmittance, w, h, d))
+  {
+    this->Transmittance = NewTransmittance(window);
+    if (!this->Transmittance->Allocate3D(w, h, d, 1, VTK_FLOAT))
+    {
+      this->Transmittance = nullptr; // allocated again next time
+      why = "the transmittance texture could not be allocated";
+      return false;
+    }
+  }
+  if (!HasSize(this->Slices[0], w, h, 1) || !HasSize(this->Slices[1], w, h, 1))
+  {
+    for (auto& slice : this->Slices)
+    {
+      slice = NewTransmittance(window);
+      if (!slice->Allocate2D(w, h, 1, VTK_FLOAT))
+      {
+        slice = nullptr;
+        why = "the slice textures could not be allocated";
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+bool TransportTextures::AllocateCoarse(
+  vtkOpenGLRenderWindow* window, const int dims[3], std::string& why)
+{
+  if (HasSize(this->Fluence[0], dims[0], dims[1], dims[2]))
+  {
+    return true;
+  }
+  for (auto* grid :
+    { &this->Fluence[0], &this->Fluence[1], &this->CoarseMedium, &this->CoarseSource })
+  {
+    if (!AllocateRGBA16F(window, *grid, dims))
+    {
+      why = "the diffusion textures could not be allocated";
+      return false;
+    }
+  }
+  return true;
+}
+
+size_t TransportTextures::GetGPUBytes() const
+{
+  constexpr size_t rgba16f = 8, r16f = 2;
+  return rgba16f *
+    (Texels(this->Light) + Texels(this->Source) + Texels(this->Fluence[0]) +
+      Texels(this->Fluence[1]) + Texels(this->CoarseMedium) + Texels(this->CoarseSource)) +
+    r16f * (Texels(this->Transmittance) + Texels(this->Slices[0]) + Texels(this->Slices[1]));
+}
+
+void TransportTextures::ReleaseGraphicsResources(vtkWindow* window)
+{
+  for (auto* t :
+    { &this->Light, &this->Source, &this->Transmittance, &this->Slices[0], &this->Slices[1],
+      &this->Fluence[0], &this->Fluence[1], &this->CoarseMedium, &this->CoarseSource })
+  {
+    if (*t)
+    {
+      (*t)->ReleaseGraphicsResources(window);
+      *t = nullptr;
+    }
+  }
+}
+}

@@ -1,0 +1,56 @@
+// The textures the light transport volume renders into, and their allocation: each is
+// allocated again only when the grid it covers changes size, and released together.
+// The small tables the passes read are ScattererTransportTables.
+#ifndef ScattererTransportTextures_h
+#define ScattererTransportTextures_h
+
+#include "vtkSmartPointer.h"
+
+#include <cstddef> // for size_t
+#include <string>
+#include <vector>
+
+class vtkOpenGLRenderWindow;
+class vtkTextureObject;
+class vtkWindow;
+
+namespace scatterer_gpu
+{
+/** A new texture in @p window's context: linear or nearest filtering, @p wrap
+ * (vtkTextureObject::ClampToEdge, ...) along all three axes. Not allocated. */
+vtkSmartPointer<vtkTextureObject> NewTransportTexture(
+  vtkOpenGLRenderWindow* window, bool linear, int wrap);
+
+/** The float texels of 3D @p texture, RED (1 component) or RGBA (4), x fastest. */
+std::vector<float> DownloadTexture3D(vtkTextureObject* texture, int components);
+
+/** The render targets of the transport passes. */
+struct TransportTextures
+{
+  vtkSmartPointer<vtkTextureObject> Light;         ///< RGBA16F, fine grid: the light received
+  vtkSmartPointer<vtkTextureObject> Source;        ///< RGBA16F, fine grid: light scattered once
+  vtkSmartPointer<vtkTextureObject> Transmittance; ///< R16F, sweep order
+  vtkSmartPointer<vtkTextureObject> Slices[2];     ///< R16F, ping-pong of the sweep
+  vtkSmartPointer<vtkTextureObject> Fluence[2];    ///< RGBA16F, coarse grid: diffusion ping-pong
+  vtkSmartPointer<vtkTextureObject> CoarseMedium;  ///< RGBA16F, coarse grid: albedo, sigma_t
+  vtkSmartPointer<vtkTextureObject>
+    CoarseSource; ///< RGBA16F, coarse grid: light scattered once, occlusion
+
+  /** Light and Source on the fine grid of @p dims; false with @p why set if refused. */
+  bool AllocateFine(vtkOpenGLRenderWindow* window, const int dims[3], std::string& why);
+
+  /** Transmittance of @p sweepDims (rows, columns, slices) and the slices; false with
+   * @p why set if refused. */
+  bool AllocateSweep(vtkOpenGLRenderWindow* window, const int sweepDims[3], std::string& why);
+
+  /** The four coarse grids of @p dims; false with @p why set if refused. */
+  bool AllocateCoarse(vtkOpenGLRenderWindow* window, const int dims[3], std::string& why);
+
+  /** Bytes of GPU memory the textures held take. */
+  size_t GetGPUBytes() const;
+
+  void ReleaseGraphicsResources(vtkWindow* window);
+};
+}
+
+#endif
