@@ -21,7 +21,6 @@
 #include "vtkScattererTransportVolume.h"
 #include "vtkScattererVolumeReader.h"
 #include "vtkSmartPointer.h"
-#include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 #include "vtkWindowToImageFilter.h"
 
@@ -99,10 +98,7 @@ int main(int argc, char* argv[])
   vtkSmartPointer<vtkGPUVolumeRayCastMapper> mapper = scatterer_examples::MakeMapper(options);
   mapper->SetInputData(image);
   vtkNew<vtkVolumeProperty> property;
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(property);
-  renderer->AddVolume(volume);
+  scatterer_examples::AddVolume(renderer, mapper, property);
 
   if (!autoScene)
   {

@@ -24,6 +24,7 @@
 #include "Common/ScattererCommandLine.h"
 #include "Common/ScattererCtHeadScene.h"
 #include "Common/ScattererFrameCheck.h"
+#include "Common/ScattererMapperSetup.h"
 #include "Common/ScattererRenderOptions.h"
 #include "Common/ScattererScreenshot.h"
 #include "Common/ScattererTransferPresets.h"
@@ -691,10 +692,7 @@ int main(int argc, char* argv[])
   vtkNew<vtkScattererTemplateVolumeMapper> mapper;
   mapper->SetInputData(image);
   vtkNew<vtkVolumeProperty> property;
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(property);
-  renderer->AddVolume(volume);
+  vtkVolume* volume = scatterer_examples::AddVolume(renderer, mapper, property);
   if (ctHead)
   {
     scatterer_examples::ApplyCtHeadProperty(property);

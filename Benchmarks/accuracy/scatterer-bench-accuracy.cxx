@@ -14,6 +14,7 @@
 #include "ScattererReferenceScene.h"
 
 #include "Common/ScattererCtHeadScene.h"
+#include "Common/ScattererMapperSetup.h"
 #include "scatterer_reference/Metrics.h"
 #include "scatterer_reference/PathTracer.h"
 
@@ -50,7 +51,6 @@
 #include "vtkStringArray.h"
 #include "vtkTable.h"
 #include "vtkTextProperty.h"
-#include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 #include "vtkWindowToImageFilter.h"
 #include "vtkXMLImageDataReader.h"
@@ -190,19 +190,6 @@ vtkSmartPointer<vtkImageData> BytesImage(const std::vector<unsigned char>& px, i
   img->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
   std::copy(px.begin(), px.end(), static_cast<unsigned char*>(img->GetScalarPointer()));
   return img;
-}
-
-std::vector<unsigned char> HeatBytes(const std::vector<float>& map, double maxValue)
-{
-  std::vector<unsigned char> px(map.size() * 3);
-  for (size_t i = 0; i < map.size(); ++i)
-  {
-    const double t = std::clamp(maxValue > 0 ? map[i] / maxValue : 0.0, 0.0, 1.0);
-    px[3 * i] = static_cast<unsigned char>(std::lround(255 * std::min(1.0, 3 * t)));
-    px[3 * i + 1] = static_cast<unsigned char>(std::lround(255 * std::clamp(3 * t - 1, 0.0, 1.0)));
-    px[3 * i + 2] = static_cast<unsigned char>(std::lround(255 * std::clamp(3 * t - 2, 0.0, 1.0)));
-  }
-  return px;
 }
 
 // The scene for the VTK 9.2 peer (vtk92_scattering_peer.py): volume .vti + JSON.
@@ -504,13 +491,9 @@ int main(int argc, char* argv[])
       vtkNew<vtkVolumeProperty> property;
       property->DeepCopy(scene.Property);
       property->SetShade(config.Mode == "phong" || config.Shade);
-      vtkNew<vtkVolume> volume;
-      volume->SetMapper(mapper);
-      volume->SetProperty(property);
-
       vtkNew<vtkRenderer> renderer;
       renderer->SetBackground(0, 0, 0);
-      renderer->AddVolume(volume);
+      scatterer_examples::AddVolume(renderer, mapper, property);
       scatterer_reference_vtk::ApplySceneView(scene, renderer);
       window->GetRenderers()->RemoveAllItems();
       window->AddRenderer(renderer);
@@ -629,7 +612,8 @@ int main(int argc, char* argv[])
         maps.push_back(scatterer_reference::errorMap(images[p], ref, width, height, scales[p]));
       }
     for (const auto& map : maps)
-      append->AddInputData(BytesImage(HeatBytes(map, 1.0 / refExposure), width, height));
+      append->AddInputData(
+        BytesImage(scatterer_reference_vtk::HeatMapBytes(map, 1.0 / refExposure), width, height));
     append->Update();
     vtkNew<vtkPNGWriter> w;
     w->SetInputConnection(append->GetOutputPort());

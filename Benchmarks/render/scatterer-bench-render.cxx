@@ -31,7 +31,6 @@
 #include "vtkScattererTemplateVolumeMapper.h"
 #include "vtkScattererTransportVolume.h"
 #include "vtkScattererVolumeReader.h"
-#include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
 #include <algorithm>
@@ -199,11 +198,8 @@ int main(int argc, char* argv[])
       st->GetTransportVolume()->SetSynchronousTiming(true); // build times include the GPU work
     }
     vtkNew<vtkVolumeProperty> property;
-    vtkNew<vtkVolume> volume;
-    volume->SetMapper(mapper);
-    volume->SetProperty(property);
     vtkNew<vtkRenderer> renderer;
-    renderer->AddVolume(volume);
+    scatterer_examples::AddVolume(renderer, mapper, property);
     scatterer_examples::ApplyCtHeadProperty(property);
     scatterer_examples::ApplyCtHeadCamera(renderer);
     scatterer_examples::ApplyCtHeadLight(renderer);

@@ -1,7 +1,11 @@
 #include "ScattererMapperSetup.h"
 
+#include "vtkNew.h"
 #include "vtkOpenGLGPUVolumeRayCastMapper.h"
+#include "vtkRenderer.h"
 #include "vtkScattererTemplateVolumeMapper.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
 
 #include <sstream>
 
@@ -63,5 +67,15 @@ std::string DescribeSettings(vtkGPUVolumeRayCastMapper* mapper)
       << " strength=" << m->GetOcclusionStrength() << " long_range=" << m->GetLongRangeMultiple()
       << " blend=" << (m->GetTemplateBlendingEnabled() ? "on" : "off");
   return out.str();
+}
+
+vtkVolume* AddVolume(vtkRenderer* renderer, vtkAbstractVolumeMapper* mapper,
+  vtkVolumeProperty* property)
+{
+  vtkNew<vtkVolume> volume;
+  volume->SetMapper(mapper);
+  volume->SetProperty(property);
+  renderer->AddVolume(volume);
+  return volume;
 }
 }

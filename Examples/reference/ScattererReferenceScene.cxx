@@ -252,7 +252,7 @@ bool WritePng(const std::vector<float>& rgb, int width, int height, double expos
   return WriteRgb8(px, width, height, path);
 }
 
-bool WriteMapPng(const std::vector<float>& map, int width, int height, double maxValue, const std::string& path)
+std::vector<unsigned char> HeatMapBytes(const std::vector<float>& map, double maxValue)
 {
   std::vector<unsigned char> px(map.size() * 3);
   for (size_t i = 0; i < map.size(); ++i)
@@ -263,7 +263,12 @@ bool WriteMapPng(const std::vector<float>& map, int width, int height, double ma
     px[3 * i + 1] = static_cast<unsigned char>(std::lround(255 * std::clamp(3 * t - 1, 0.0, 1.0)));
     px[3 * i + 2] = static_cast<unsigned char>(std::lround(255 * std::clamp(3 * t - 2, 0.0, 1.0)));
   }
-  return WriteRgb8(px, width, height, path);
+  return px;
+}
+
+bool WriteMapPng(const std::vector<float>& map, int width, int height, double maxValue, const std::string& path)
+{
+  return WriteRgb8(HeatMapBytes(map, maxValue), width, height, path);
 }
 
 double AutoExposure(const std::vector<float>& rgb)

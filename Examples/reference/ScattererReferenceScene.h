@@ -68,7 +68,13 @@ vtkSmartPointer<vtkImageData> ToImageData(const scatterer_reference::RenderResul
 /** clamp(exposure * rgb) to 8 bits, no gamma (as VTK's composite colours). */
 bool WritePng(const std::vector<float>& rgb, int width, int height, double exposure, const std::string& path);
 
-/** A grey-scale PNG of a one-channel map, scaled so @p maxValue is white. */
+/**
+ * RGB bytes of a one-channel map as a black -> red -> yellow -> white heat map, scaled
+ * so @p maxValue is white (the error maps of scatterer-reference and the accuracy benchmark).
+ */
+std::vector<unsigned char> HeatMapBytes(const std::vector<float>& map, double maxValue);
+
+/** A PNG of a one-channel map: HeatMapBytes. */
 bool WriteMapPng(const std::vector<float>& map, int width, int height, double maxValue, const std::string& path);
 
 /** Exposure that maps the 99.5th percentile of luminance to 1. */

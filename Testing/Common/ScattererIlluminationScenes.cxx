@@ -1,6 +1,7 @@
 #include "ScattererIlluminationScenes.h"
 
 #include "Common/ScattererCtHeadScene.h"
+#include "Common/ScattererMapperSetup.h"
 #include "ScattererTestVolumes.h"
 
 #include "vtkCamera.h"
@@ -16,7 +17,6 @@
 #include "vtkRenderer.h"
 #include "vtkScattererTemplateVolumeMapper.h"
 #include "vtkScattererVolumeReader.h"
-#include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
 #include <cmath>
@@ -123,12 +123,9 @@ int RunIlluminationScene(const std::string& name, int argc, char* argv[])
   mapper->AutoAdjustSampleDistancesOff();
   mapper->SetSampleDistance(0.5);
   vtkNew<vtkVolumeProperty> property;
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(property);
   vtkNew<vtkRenderer> renderer;
   renderer->SetBackground(0.1, 0.1, 0.2);
-  renderer->AddVolume(volume);
+  scatterer_examples::AddVolume(renderer, mapper, property);
   renderer->AutomaticLightCreationOff();
   vtkNew<vtkRenderWindow> window;
   window->SetSize(200, 200);

@@ -1,5 +1,6 @@
 // Baseline-image test: the synthetic shell/ball/plate volume through
 // vtkScattererTemplateVolumeMapper at 200x200 with VTK's headlight.
+#include "Common/ScattererMapperSetup.h"
 #include "ScattererTestVolumes.h"
 
 #include "vtkCamera.h"
@@ -10,7 +11,6 @@
 #include "vtkRenderWindowInteractor.h"
 #include "vtkRenderer.h"
 #include "vtkScattererTemplateVolumeMapper.h"
-#include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
 int TestScattererMapperShellBallPlate(int argc, char* argv[])
@@ -23,12 +23,8 @@ int TestScattererMapperShellBallPlate(int argc, char* argv[])
   mapper->SetSampleDistance(0.5);
   vtkNew<vtkVolumeProperty> property;
   scatterer_testing::ApplyShellBallPlateProperty(property);
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(property);
-
   vtkNew<vtkRenderer> renderer;
-  renderer->AddVolume(volume);
+  scatterer_examples::AddVolume(renderer, mapper, property);
   renderer->SetBackground(0.1, 0.1, 0.2);
   vtkNew<vtkRenderWindow> window;
   window->SetSize(200, 200);

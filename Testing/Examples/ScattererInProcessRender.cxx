@@ -1,48 +1,34 @@
 #include "ScattererInProcessRender.h"
 
+#include "Common/ScattererMapperSetup.h"
+#include "ScattererRenderHarness.h"
+
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkScattererTemplateVolumeMapper.h"
-#include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
-#include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 #include "vtkWindowToImageFilter.h"
 
 namespace scatterer_testing
 {
-namespace
-{
-// One window for the whole program: opening X connections one after another under
-// Xvfb sometimes fails ("bad X server connection", and VTK aborts).
-vtkRenderWindow* SharedWindow()
-{
-  static vtkSmartPointer<vtkRenderWindow> window = [] {
-    auto w = vtkSmartPointer<vtkRenderWindow>::New();
-    w->SetMultiSamples(0);
-    w->OffScreenRenderingOn();
-    return w;
-  }();
-  return window;
-}
-}
-
 std::vector<unsigned char> RenderRgb(vtkImageData* image, const SceneSetup& setup, int size)
 {
+  // The render harness's one window for the whole program (opening X connections one
+  // after another under Xvfb sometimes fails), off screen here; setting it again is a
+  // no-op, and it is set before the first frame.
   vtkRenderWindow* window = SharedWindow();
+  window->OffScreenRenderingOn();
   window->SetSize(size, size);
   vtkNew<vtkRenderer> renderer;
   window->AddRenderer(renderer);
   vtkNew<vtkScattererTemplateVolumeMapper> mapper;
   mapper->SetInputData(image);
   vtkNew<vtkVolumeProperty> property;
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(property);
-  renderer->AddVolume(volume);
+  scatterer_examples::AddVolume(renderer, mapper, property);
   setup(property, renderer, mapper);
   window->Render();
   vtkNew<vtkWindowToImageFilter> grab;

@@ -66,7 +66,11 @@ ImageDifference CompareRgb(const std::vector<unsigned char>& a,
 /** Mean of the RGB channels. */
 double MeanBrightness(const std::vector<unsigned char>& image);
 
-/** Counts events of one kind on an object and keeps the last message. */
+/**
+ * Counts events of one kind on an object and keeps the last call data as text (for
+ * events such as UpdateShaderEvent; errors and warnings: vtkTest::ErrorObserver with
+ * Testing/Common/ScattererErrorObserver.h).
+ */
 struct EventCounter
 {
   int Count = 0;

@@ -13,6 +13,7 @@
 // ray starts on the plane, a ray through zeroed voxels samples at its own positions):
 // those silhouette pixels are found from the stock renders of the two, without
 // lighting, and left out; what remains compares the lighting alone.
+#include "Common/ScattererMapperSetup.h"
 #include "ScattererRenderHarness.h"
 
 #include "vtkCamera.h"
@@ -27,7 +28,6 @@
 #include "vtkRendererCollection.h"
 #include "vtkScattererTemplateVolumeMapper.h"
 #include "vtkSmartPointer.h"
-#include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
 #include <gtest/gtest.h>
@@ -145,12 +145,8 @@ std::vector<unsigned char> Render(vtkImageData* image, Removal removal, Mode mod
     property->SetLabelColor(2, color);
     property->SetLabelScalarOpacity(2, transparent);
   }
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(property);
-
   vtkNew<vtkRenderer> renderer;
-  renderer->AddVolume(volume);
+  scatterer_examples::AddVolume(renderer, mapper, property);
   renderer->AutomaticLightCreationOff();
   // From the removed side (+x) and above. z is the dominant axis, so the sweep's steps
   // along it do not all land on the plane x = 27.5, where nearest lookups would tie.

@@ -7,6 +7,7 @@
 //
 // First the stock ray caster (no lighting) must place both the same, so the comparison
 // is about the lighting and not about VTK's own handling of the direction matrix.
+#include "Common/ScattererMapperSetup.h"
 #include "ScattererRenderHarness.h"
 
 #include "vtkCamera.h"
@@ -117,16 +118,12 @@ std::vector<unsigned char> Render(vtkImageData* image, vtkMatrix4x4* user, Mode 
   mapper->AutoAdjustSampleDistancesOff();
   mapper->SetSampleDistance(0.5);
   mapper->UseJitteringOff();
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(property);
+  vtkNew<vtkRenderer> renderer;
+  vtkVolume* volume = scatterer_examples::AddVolume(renderer, mapper, property);
   if (user)
   {
     volume->SetUserMatrix(user);
   }
-
-  vtkNew<vtkRenderer> renderer;
-  renderer->AddVolume(volume);
   renderer->AutomaticLightCreationOff();
   // From -x and above: the stem shadows the foot.
   scatterer_testing::AddSceneLight(renderer, -0.7, 0.25, 0.65);

@@ -4,6 +4,7 @@
 // comes out black: what a NaN or Inf in the lighting produces), and the energy
 // bound (never brighter than the same scene with occlusion off, within 8-bit
 // rounding). Some cases check more (thin-sheet leak, n1 = n2 identity).
+#include "Common/ScattererMapperSetup.h"
 #include "ScattererRenderHarness.h"
 
 #include "vtkCamera.h"
@@ -19,7 +20,6 @@
 #include "vtkRenderer.h"
 #include "vtkRendererCollection.h"
 #include "vtkScattererTemplateVolumeMapper.h"
-#include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
 #include <scatterer/Template.h>
@@ -127,12 +127,9 @@ Result Render(const HardScene& setup, int mode)
   {
     setup.Mapper(mapper);
   }
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(property);
   vtkNew<vtkRenderer> renderer;
   renderer->SetBackground(0, 0, 0);
-  renderer->AddVolume(volume);
+  scatterer_examples::AddVolume(renderer, mapper, property);
   renderer->AutomaticLightCreationOff();
   renderer->ResetCamera(image->GetBounds());
   renderer->GetActiveCamera()->Azimuth(30);

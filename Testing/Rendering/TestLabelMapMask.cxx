@@ -2,6 +2,7 @@
 // per-label medium lives in a table, not in material slots): the illumination applies,
 // leaves no black hole where the stock mapper shows something, and every label keeps
 // its own colour (the last label, 200, is the only red one and shows red).
+#include "Common/ScattererMapperSetup.h"
 #include "ScattererRenderHarness.h"
 
 #include "vtkCamera.h"
@@ -13,7 +14,6 @@
 #include "vtkRenderer.h"
 #include "vtkScattererTemplateVolumeMapper.h"
 #include "vtkSmartPointer.h"
-#include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
 #include <gtest/gtest.h>
@@ -87,11 +87,8 @@ std::vector<unsigned char> Render(bool ours)
   mapper->AutoAdjustSampleDistancesOff();
   mapper->SetSampleDistance(0.5);
   mapper->UseJitteringOff();
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(property);
   vtkNew<vtkRenderer> renderer;
-  renderer->AddVolume(volume);
+  scatterer_examples::AddVolume(renderer, mapper, property);
   renderer->AutomaticLightCreationOff();
   // From the camera's side: every face the camera sees is lit, so a black pixel there
   // is a hole, not a shadow.

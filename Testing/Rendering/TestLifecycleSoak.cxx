@@ -3,6 +3,7 @@
 // the stock mapper and back. Process memory must not grow beyond a stated
 // bound, no replacement may be left on the volume while the stock mapper draws
 // it, and the last picture must equal a fresh mapper's picture.
+#include "Common/ScattererMapperSetup.h"
 #include "ScattererProgramBudget.h"
 #include "ScattererRenderHarness.h"
 #include "ScattererShaderInstaller.h"
@@ -60,11 +61,8 @@ TEST(LifecycleSoak, FiveHundredFramesStayBoundedAndCorrect)
     m->AutoAdjustSampleDistancesOff();
     m->SetSampleDistance(1.0);
   }
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(property);
   vtkNew<vtkRenderer> renderer;
-  renderer->AddVolume(volume);
+  vtkVolume* volume = scatterer_examples::AddVolume(renderer, mapper, property);
   renderer->AutomaticLightCreationOff();
   scatterer_testing::AddSceneLight(renderer, 1, 0.5, 0.8);
   renderer->GetActiveCamera()->SetPosition(60, -25, 40);
@@ -159,11 +157,7 @@ TEST(LifecycleSoak, RandomTogglesOnEightVolumesStayBounded)
       mapper->SetTemplatesPerMaterial(2);
       auto property = vtkSmartPointer<vtkVolumeProperty>::New();
       scatterer_testing::ApplyShellBallPlateProperty(property);
-      vtkNew<vtkVolume> volume;
-      volume->SetMapper(mapper);
-      volume->SetProperty(property);
-      volume->SetPosition(20.0 * v, 0.0, 0.0);
-      renderer->AddVolume(volume);
+      scatterer_examples::AddVolume(renderer, mapper, property)->SetPosition(20.0 * v, 0.0, 0.0);
       mappers.push_back(mapper);
       properties.push_back(property);
     }

@@ -3,6 +3,7 @@
 // so once), that it rebuilds the shader only when the GLSL changes, that it
 // leaves nothing behind on a volume, and that occlusion only ever darkens.
 // Renders under X (CTest runs under xvfb-run); all tests share one window.
+#include "ScattererErrorObserver.h"
 #include "ScattererRenderHarness.h"
 #include "ScattererShaderInstaller.h"
 #include "ScattererTestVolumes.h"
@@ -21,6 +22,7 @@
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkSphereSource.h"
+#include "vtkTestErrorObserver.h"
 #include "vtkPointData.h"
 #include "vtkRenderWindow.h"
 #include "vtkRendererCollection.h"
@@ -49,9 +51,13 @@ vtkRenderWindow* Window()
   return scatterer_testing::SharedWindow();
 }
 
+using scatterer_testing::ErrorCount;
 using scatterer_testing::EventCounter;
+using scatterer_testing::LastError;
+using scatterer_testing::LastWarning;
 using scatterer_testing::MaxDifference;
 using scatterer_testing::MeanBrightness;
+using scatterer_testing::WarningCount;
 
 struct Scene
 {
@@ -197,13 +203,15 @@ TEST(MapperBehaviour, NoLightMeansNoIlluminationCodeAndStockPixels)
 TEST(MapperBehaviour, OtherBlendModesRenderAsStockWithOneWarning)
 {
   Scene scene;
-  EventCounter warnings(scene.Mapper, vtkCommand::WarningEvent);
+  vtkNew<vtkTest::ErrorObserver> warnings;
+  scene.Mapper->AddObserver(vtkCommand::WarningEvent, warnings);
   scene.Mapper->SetBlendModeToMaximumIntensity();
   scene.Stock->SetBlendModeToMaximumIntensity();
   const auto first = scene.Render();
   scene.Render();
-  EXPECT_EQ(warnings.Count, 1);
-  EXPECT_NE(warnings.Last.find("maximum intensity"), std::string::npos) << warnings.Last;
+  EXPECT_EQ(WarningCount(warnings), 1u);
+  EXPECT_NE(LastWarning(warnings).find("maximum intensity"), std::string::npos)
+    << LastWarning(warnings);
   EXPECT_EQ(MaxDifference(first, scene.RenderStock()), 0);
 }
 
@@ -222,11 +230,12 @@ TEST(MapperBehaviour, MultiComponentDataRendersAsStockWithOneWarning)
   }
   scene.Mapper->SetInputData(rgba);
   scene.Stock->SetInputData(rgba);
-  EventCounter warnings(scene.Mapper, vtkCommand::WarningEvent);
+  vtkNew<vtkTest::ErrorObserver> warnings;
+  scene.Mapper->AddObserver(vtkCommand::WarningEvent, warnings);
   const auto first = scene.Render();
   scene.Render();
-  EXPECT_EQ(warnings.Count, 1);
-  EXPECT_NE(warnings.Last.find("components"), std::string::npos) << warnings.Last;
+  EXPECT_EQ(WarningCount(warnings), 1u);
+  EXPECT_NE(LastWarning(warnings).find("components"), std::string::npos) << LastWarning(warnings);
   EXPECT_EQ(MaxDifference(first, scene.RenderStock()), 0);
 }
 
@@ -305,10 +314,11 @@ TEST(MapperBehaviour, ShaderThatFailsToCompileFallsBackToStockWithAnError)
 {
   Scene scene;
   scene.Mapper->SetExtraShaderCodeForTesting("this is not GLSL;\n");
-  EventCounter errors(scene.Mapper, vtkCommand::ErrorEvent);
+  vtkNew<vtkTest::ErrorObserver> errors;
+  scene.Mapper->AddObserver(vtkCommand::ErrorEvent, errors);
   const auto image = scene.Render();
-  EXPECT_GE(errors.Count, 1);
-  EXPECT_NE(errors.Last.find("failed to compile"), std::string::npos) << errors.Last;
+  EXPECT_GE(ErrorCount(errors), 1u);
+  EXPECT_NE(LastError(errors).find("failed to compile"), std::string::npos) << LastError(errors);
   EXPECT_EQ(scene.Mapper->GetLastShaderFeatures().rfind("stock", 0), 0u);
   EXPECT_EQ(MaxDifference(image, scene.RenderStock()), 0);
 }

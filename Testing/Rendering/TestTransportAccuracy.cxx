@@ -5,6 +5,7 @@
 // plate shadows the shell from the light: Phong has no shadows, so a transport that
 // lost them (a broken sweep, no occlusion) fails here. It does not guard the
 // multiple-scattering term: without it the transport is even closer on this scene.
+#include "Common/ScattererMapperSetup.h"
 #include "ScattererReferenceScene.h"
 #include "ScattererRenderHarness.h"
 #include "scatterer_reference/Metrics.h"
@@ -18,7 +19,6 @@
 #include "vtkRendererCollection.h"
 #include "vtkScattererTemplateVolumeMapper.h"
 #include "vtkSmartPointer.h"
-#include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
 #include <gtest/gtest.h>
@@ -50,12 +50,9 @@ std::vector<float> RenderGpu(const scatterer_reference_vtk::VtkScene& scene,
   vtkNew<vtkVolumeProperty> property;
   property->DeepCopy(scene.Property);
   property->SetShade(shade);
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(property);
   vtkNew<vtkRenderer> renderer;
   renderer->SetBackground(0, 0, 0);
-  renderer->AddVolume(volume);
+  scatterer_examples::AddVolume(renderer, mapper, property);
   scatterer_reference_vtk::ApplySceneView(scene, renderer);
 
   vtkRenderWindow* window = scatterer_testing::SharedWindow();

@@ -7,6 +7,7 @@
 // densest material; the light comes from the piece's side (+x), so the sheet's
 // shadow falls away from it. (Shadows cast into a piece from other pieces are not
 // seen by it: docs/paraview.md.)
+#include "Common/ScattererMapperSetup.h"
 #include "ScattererRenderHarness.h"
 
 #include "vtkCamera.h"
@@ -19,7 +20,6 @@
 #include "vtkRendererCollection.h"
 #include "vtkScattererTemplateVolumeMapper.h"
 #include "vtkSmartPointer.h"
-#include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
 #include <gtest/gtest.h>
@@ -84,12 +84,8 @@ std::vector<unsigned char> RenderOwnedPart(
   {
     mapper->SetMaterialDerivationRange(100, 250);
   }
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(property);
-
   vtkNew<vtkRenderer> renderer;
-  renderer->AddVolume(volume);
+  scatterer_examples::AddVolume(renderer, mapper, property);
   renderer->AutomaticLightCreationOff();
   scatterer_testing::AddSceneLight(
     renderer, NX + 100, 0.5 * NY, 0.5 * NZ, NX, 0.5 * NY, 0.5 * NZ);

@@ -1,10 +1,11 @@
-// vtkScattererTemplateSource and vtkScattererMaterial: the output is the core's
-// templates point for point, with the documented arrays; progress is reported;
-// templates survive a save/load round trip bit for bit; bad files and invalid
-// materials give an error (with a message that says what) and never a crash;
-// the material setters clamp and reject NaN.
-#include "vtkScattererMaterial.h"
+// vtkScattererTemplateSource: the output is the core's templates point for point,
+// with the documented arrays; progress is reported; templates survive a save/load
+// round trip bit for bit; bad files and invalid materials give an error (with a
+// message that says what) and never a crash; the settings clamp and reject NaN.
+// (vtkScattererMaterial's own tests are in TestMaterial.cxx.)
 #include "vtkScattererTemplateSource.h"
+
+#include "ScattererErrorObserver.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
@@ -16,7 +17,9 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkScattererMaterial.h"
 #include "vtkStringArray.h"
+#include "vtkTestErrorObserver.h"
 
 #include <scatterer/Template.h>
 #include <scatterer/TemplateIO.h>
@@ -40,55 +43,9 @@ namespace
 {
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// Collects the ErrorEvent messages of the objects it watches (an observer also
-// keeps VTK from printing them).
-struct ErrorCatcher
-{
-  std::vector<std::string> Messages;
-  vtkNew<vtkCallbackCommand> Command;
-  ErrorCatcher()
-  {
-    this->Command->SetClientData(this);
-    this->Command->SetCallback([](vtkObject*, unsigned long, void* client, void* call) {
-      static_cast<ErrorCatcher*>(client)->Messages.emplace_back(
-        call ? static_cast<const char*>(call) : "");
-    });
-  }
-  // Observers are removed again on destruction, so no watched object calls a
-  // destroyed catcher.
-  ~ErrorCatcher()
-  {
-    for (auto& watched : this->Watched)
-    {
-      watched.first->RemoveObserver(watched.second);
-    }
-  }
-  ErrorCatcher(const ErrorCatcher&) = delete;
-  ErrorCatcher& operator=(const ErrorCatcher&) = delete;
-  void Watch(vtkObject* object)
-  {
-    this->Watched.emplace_back(object, object->AddObserver(vtkCommand::ErrorEvent, this->Command));
-  }
-  void Watch(vtkAlgorithm* algorithm)
-  {
-    this->Watch(static_cast<vtkObject*>(algorithm));
-    this->Watch(static_cast<vtkObject*>(algorithm->GetExecutive()));
-  }
-  std::vector<std::pair<vtkSmartPointer<vtkObject>, unsigned long>> Watched;
-  std::string All() const
-  {
-    std::string all;
-    for (const auto& m : this->Messages)
-    {
-      all += m + "\n";
-    }
-    return all;
-  }
-  bool Mentions(const std::string& text) const
-  {
-    return this->All().find(text) != std::string::npos;
-  }
-};
+using scatterer_testing::ErrorCount;
+using scatterer_testing::ErrorMentions;
+using scatterer_testing::WatchErrors;
 
 // Records every ProgressEvent value.
 struct ProgressRecorder
@@ -348,13 +305,13 @@ TEST_F(TemplateSourceTest, TemplateRadiusScalesWithoutRegenerating)
     }
   }
 
-  ErrorCatcher errors;
-  errors.Watch(source);
+  vtkNew<vtkTest::ErrorObserver> errors;
+  WatchErrors(source, errors);
   for (double bad : { 0.0, -1.0, kNaN, std::numeric_limits<double>::infinity() })
   {
-    errors.Messages.clear();
+    errors->Clear();
     source->SetTemplateRadius(bad);
-    EXPECT_TRUE(errors.Mentions("SetTemplateRadius")) << bad;
+    EXPECT_TRUE(ErrorMentions(errors, "SetTemplateRadius")) << bad;
     EXPECT_EQ(source->GetTemplateRadius(), 2.5);
   }
 }
@@ -421,10 +378,10 @@ TEST_F(TemplateSourceTest, AbortGivesAnEmptyOutputWithoutError)
     }
   });
   const unsigned long tag = source->AddObserver(vtkCommand::ProgressEvent, abort);
-  ErrorCatcher errors;
-  errors.Watch(source);
+  vtkNew<vtkTest::ErrorObserver> errors;
+  WatchErrors(source, errors);
   source->Update();
-  EXPECT_TRUE(errors.Messages.empty()) << errors.All();
+  EXPECT_FALSE(errors->GetError()) << errors->GetErrorMessage();
   EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 0);
   EXPECT_EQ(source->GetNumberOfTemplates(), 0);
 
@@ -451,10 +408,10 @@ TEST_F(TemplateSourceTest, SaveLoadRoundTripIsBitIdentical)
   ASSERT_GT(fs::file_size(path), 68u);
 
   auto loader = vtkSmartPointer<vtkScattererTemplateSource>::New();
-  ErrorCatcher errors;
-  errors.Watch(loader);
-  ASSERT_TRUE(loader->LoadTemplates(path.c_str())) << errors.All();
-  EXPECT_TRUE(errors.Messages.empty()) << errors.All();
+  vtkNew<vtkTest::ErrorObserver> errors;
+  WatchErrors(loader, errors);
+  ASSERT_TRUE(loader->LoadTemplates(path.c_str())) << errors->GetErrorMessage();
+  EXPECT_FALSE(errors->GetError()) << errors->GetErrorMessage();
 
   // Materials and settings reflect the file.
   ASSERT_EQ(loader->GetNumberOfMaterials(), 4);
@@ -486,7 +443,7 @@ TEST_F(TemplateSourceTest, SaveLoadRoundTripIsBitIdentical)
   loader->Update();
   EXPECT_EQ(progress.Intermediate(), 0u) << "loaded templates must be output, not regenerated";
   ExpectIdentical(saver->GetOutput(), loader->GetOutput());
-  EXPECT_TRUE(errors.Messages.empty()) << errors.All();
+  EXPECT_FALSE(errors->GetError()) << errors->GetErrorMessage();
 
   // Saving the loaded set writes the same bytes.
   const std::string again = Path("again.scattpl");
@@ -571,14 +528,16 @@ TEST_F(TemplateSourceTest, LoadingABadFileFailsWithAMessage)
         bytes.substr(0, 200) + char(bytes[200] ^ 0x40) + bytes.substr(201)),
       "(at byte" },
   };
+  vtkNew<vtkTest::ErrorObserver> errors;
+  WatchErrors(source, errors);
   for (const auto& c : cases)
   {
-    ErrorCatcher errors;
-    errors.Watch(source);
+    errors->Clear();
     EXPECT_FALSE(source->LoadTemplates(c.Path.c_str())) << c.Path;
-    ASSERT_FALSE(errors.Messages.empty()) << c.Path << ": no error reported";
-    EXPECT_TRUE(errors.Mentions(c.Mention)) << c.Path << ": " << errors.All();
-    EXPECT_TRUE(errors.Mentions(c.Path)) << "the message should name the file: " << errors.All();
+    ASSERT_TRUE(errors->GetError()) << c.Path << ": no error reported";
+    EXPECT_TRUE(ErrorMentions(errors, c.Mention)) << c.Path << ": " << errors->GetErrorMessage();
+    EXPECT_TRUE(ErrorMentions(errors, c.Path))
+      << "the message should name the file: " << errors->GetErrorMessage();
     // The source is as it was.
     EXPECT_EQ(source->GetNumberOfMaterials(), 4);
     EXPECT_EQ(source->GetTemplatesPerMaterial(), 2);
@@ -586,14 +545,13 @@ TEST_F(TemplateSourceTest, LoadingABadFileFailsWithAMessage)
     EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), points);
   }
 
-  ErrorCatcher errors;
-  errors.Watch(source);
+  errors->Clear();
   EXPECT_FALSE(source->LoadTemplates(nullptr));
   EXPECT_FALSE(source->LoadTemplates(""));
-  EXPECT_EQ(errors.Messages.size(), 2u);
-  errors.Messages.clear();
+  EXPECT_EQ(ErrorCount(errors), 2u);
+  errors->Clear();
   EXPECT_FALSE(source->SaveTemplates(Path("no/such/dir/out.scattpl").c_str()));
-  EXPECT_TRUE(errors.Mentions("cannot open for writing")) << errors.All();
+  EXPECT_TRUE(ErrorMentions(errors, "cannot open for writing")) << errors->GetErrorMessage();
 }
 
 // Materials the core rejects give an error and an empty output, never a crash;
@@ -607,17 +565,17 @@ TEST_F(TemplateSourceTest, InvalidMaterialIsAnErrorNotACrash)
   bad->SetName("bad");
   source->AddMaterial(good);
   source->AddMaterial(bad);
-  ErrorCatcher errors;
-  errors.Watch(source);
-  errors.Watch(bad.GetPointer());
+  vtkNew<vtkTest::ErrorObserver> errors;
+  WatchErrors(source, errors);
+  bad->AddObserver(vtkCommand::ErrorEvent, errors);
 
   // NaN never reaches the core: the setter rejects it and keeps the value.
   bad->SetOpacity(kNaN);
-  EXPECT_TRUE(errors.Mentions("SetOpacity")) << errors.All();
+  EXPECT_TRUE(ErrorMentions(errors, "SetOpacity")) << errors->GetErrorMessage();
   EXPECT_EQ(bad->GetOpacity(), 0.5);
-  errors.Messages.clear();
+  errors->Clear();
   source->Update();
-  EXPECT_TRUE(errors.Messages.empty()) << errors.All();
+  EXPECT_FALSE(errors->GetError()) << errors->GetErrorMessage();
   const vtkIdType points = source->GetOutput()->GetNumberOfPoints();
   EXPECT_GT(points, 0);
 
@@ -634,121 +592,37 @@ TEST_F(TemplateSourceTest, InvalidMaterialIsAnErrorNotACrash)
   };
   for (const auto& c : cases)
   {
-    errors.Messages.clear();
+    errors->Clear();
     c.Break();
     EXPECT_EQ(source->GetExecutive()->Update(), 0) << "the update must report the failure";
-    EXPECT_TRUE(errors.Mentions(c.Mention)) << c.Mention << ": " << errors.All();
-    EXPECT_TRUE(errors.Mentions("material 1")) << errors.All();
+    EXPECT_TRUE(ErrorMentions(errors, c.Mention))
+      << c.Mention << ": " << errors->GetErrorMessage();
+    EXPECT_TRUE(ErrorMentions(errors, "material 1")) << errors->GetErrorMessage();
     EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 0);
     EXPECT_EQ(source->GetNumberOfTemplates(), 0);
-    errors.Messages.clear();
+    errors->Clear();
     EXPECT_FALSE(source->SaveTemplates(Path("bad.scattpl").c_str()));
-    EXPECT_TRUE(errors.Mentions("SaveTemplates")) << errors.All();
+    EXPECT_TRUE(ErrorMentions(errors, "SaveTemplates")) << errors->GetErrorMessage();
     EXPECT_FALSE(fs::exists(Path("bad.scattpl")));
 
     // Repair: back to the good output.
     bad->SetName("bad");
     bad->SetScalarRange(0.0, 1.0);
-    errors.Messages.clear();
+    errors->Clear();
     EXPECT_EQ(source->GetExecutive()->Update(), 1);
-    EXPECT_TRUE(errors.Messages.empty()) << errors.All();
+    EXPECT_FALSE(errors->GetError()) << errors->GetErrorMessage();
     EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), points);
   }
 
-  errors.Messages.clear();
+  errors->Clear();
   source->AddMaterial(nullptr);
-  EXPECT_TRUE(errors.Mentions("AddMaterial")) << errors.All();
+  EXPECT_TRUE(ErrorMentions(errors, "AddMaterial")) << errors->GetErrorMessage();
   EXPECT_EQ(source->GetNumberOfMaterials(), 2);
   EXPECT_EQ(source->GetMaterial(2), nullptr);
   EXPECT_EQ(source->GetMaterial(-1), nullptr);
   source->RemoveAllMaterials();
   source->Update();
   EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 0);
-}
-
-TEST(ScattererMaterial, DefaultsAreTheCores)
-{
-  vtkNew<vtkScattererMaterial> m;
-  const scatterer::Material core;
-  EXPECT_EQ(m->GetOpacity(), core.opacity);
-  EXPECT_EQ(m->GetOpacity(), 0.5);
-  EXPECT_EQ(m->GetRefractiveIndex(), 1.4);
-  EXPECT_EQ(m->GetDiffuseColor()[0], 1.0);
-  EXPECT_EQ(m->GetSelectorType(), vtkScattererMaterial::SCALAR_RANGE);
-  EXPECT_STREQ(m->GetSelectorTypeAsString(), "ScalarRange");
-  EXPECT_EQ(m->GetRefractiveIndexMinValue(), scatterer::kMinRefractiveIndex);
-  EXPECT_EQ(m->GetRefractiveIndexMaxValue(), scatterer::kMaxRefractiveIndex);
-}
-
-TEST(ScattererMaterial, SettersClamp)
-{
-  vtkNew<vtkScattererMaterial> m;
-  m->SetOpacity(-0.5);
-  EXPECT_EQ(m->GetOpacity(), 0.0);
-  m->SetOpacity(3.0);
-  EXPECT_EQ(m->GetOpacity(), 1.0);
-  m->SetOpacity(0.25);
-  EXPECT_EQ(m->GetOpacity(), 0.25);
-
-  m->SetRefractiveIndex(0.0);
-  EXPECT_EQ(m->GetRefractiveIndex(), scatterer::kMinRefractiveIndex);
-  m->SetRefractiveIndex(-2.0);
-  EXPECT_EQ(m->GetRefractiveIndex(), scatterer::kMinRefractiveIndex);
-  m->SetRefractiveIndex(1e9);
-  EXPECT_EQ(m->GetRefractiveIndex(), scatterer::kMaxRefractiveIndex);
-  m->SetRefractiveIndex(std::numeric_limits<double>::infinity());
-  EXPECT_EQ(m->GetRefractiveIndex(), scatterer::kMaxRefractiveIndex);
-  m->SetRefractiveIndex(1.33);
-  EXPECT_EQ(m->GetRefractiveIndex(), 1.33);
-
-  m->SetDiffuseColor(-1.0, 0.5, 7.0);
-  EXPECT_EQ(m->GetDiffuseColor()[0], 0.0);
-  EXPECT_EQ(m->GetDiffuseColor()[1], 0.5);
-  EXPECT_EQ(m->GetDiffuseColor()[2], 1.0);
-
-  m->SetLabel(4);
-  EXPECT_EQ(m->GetSelectorType(), vtkScattererMaterial::LABEL);
-  EXPECT_EQ(m->GetLabel(), 4);
-  m->SetScalarRange(-100.0, 300.0);
-  EXPECT_EQ(m->GetSelectorType(), vtkScattererMaterial::SCALAR_RANGE);
-  EXPECT_EQ(m->GetScalarRange()[0], -100.0);
-  EXPECT_EQ(m->GetScalarRange()[1], 300.0);
-  EXPECT_EQ(m->GetLabel(), 4) << "the label is kept while the range is active";
-}
-
-TEST(ScattererMaterial, NaNIsRejectedNamingTheSetter)
-{
-  vtkNew<vtkScattererMaterial> m;
-  m->SetOpacity(0.3);
-  m->SetRefractiveIndex(1.5);
-  m->SetDiffuseColor(0.1, 0.2, 0.3);
-  m->SetScalarRange(1.0, 2.0);
-  ErrorCatcher errors;
-  errors.Watch(m.GetPointer());
-  const vtkMTimeType mtime = m->GetMTime();
-
-  m->SetOpacity(kNaN);
-  EXPECT_TRUE(errors.Mentions("SetOpacity")) << errors.All();
-  EXPECT_EQ(m->GetOpacity(), 0.3);
-  m->SetRefractiveIndex(kNaN);
-  EXPECT_TRUE(errors.Mentions("SetRefractiveIndex")) << errors.All();
-  EXPECT_EQ(m->GetRefractiveIndex(), 1.5);
-  m->SetDiffuseColor(0.9, kNaN, 0.9);
-  EXPECT_TRUE(errors.Mentions("SetDiffuseColor")) << errors.All();
-  EXPECT_EQ(m->GetDiffuseColor()[0], 0.1);
-  EXPECT_EQ(m->GetDiffuseColor()[1], 0.2);
-  m->SetScalarRange(kNaN, 5.0);
-  EXPECT_TRUE(errors.Mentions("SetScalarRange")) << errors.All();
-  EXPECT_EQ(m->GetScalarRange()[0], 1.0);
-  EXPECT_EQ(m->GetScalarRange()[1], 2.0);
-  EXPECT_EQ(errors.Messages.size(), 4u);
-  EXPECT_EQ(m->GetMTime(), mtime) << "a rejected value must not modify the material";
-
-  // Setting the same value again does not modify either.
-  m->SetOpacity(0.3);
-  EXPECT_EQ(m->GetMTime(), mtime);
-  m->SetOpacity(0.4);
-  EXPECT_GT(m->GetMTime(), mtime);
 }
 
 TEST(ScattererTemplateSourceSettings, DefaultsClampAndNaN)
@@ -777,15 +651,16 @@ TEST(ScattererTemplateSourceSettings, DefaultsClampAndNaN)
   s->SetThreshold(5.0);
   EXPECT_EQ(s->GetThreshold(), 1.0);
 
-  ErrorCatcher errors;
-  errors.Watch(s.GetPointer());
+  vtkNew<vtkTest::ErrorObserver> errors;
+  WatchErrors(s, errors);
   s->SetThreshold(kNaN);
-  EXPECT_TRUE(errors.Mentions("SetThreshold")) << errors.All();
+  EXPECT_TRUE(ErrorMentions(errors, "SetThreshold")) << errors->GetErrorMessage();
   EXPECT_EQ(s->GetThreshold(), 1.0);
   s->SetStepLength(kNaN);
-  EXPECT_TRUE(errors.Mentions("SetStepLength")) << errors.All();
+  EXPECT_TRUE(ErrorMentions(errors, "SetStepLength")) << errors->GetErrorMessage();
   EXPECT_EQ(s->GetStepLength(), core.stepLength);
   s->SetLatticeCell(kNaN);
-  EXPECT_TRUE(errors.Mentions("SetLatticeCell")) << errors.All();
+  EXPECT_TRUE(ErrorMentions(errors, "SetLatticeCell")) << errors->GetErrorMessage();
   EXPECT_EQ(s->GetLatticeCell(), core.latticeCell);
 }
+
