@@ -18,6 +18,7 @@ class vtkVolume;
 
 namespace scatterer_render
 {
+/** The volumes a mapper put its replacements on, cleaned when they leave it or it goes. */
 class DecoratedVolumes
 {
 public:

@@ -70,6 +70,10 @@ struct PlanRequests
   const KeySet* FailedShaders = nullptr;
 };
 
+/**
+ * Decides each frame what the illumination needs (FramePlan) or why the volume renders
+ * as stock; keeps only the label-union opacity and the unassigned-voxel scan between frames.
+ */
 class FramePlanner
 {
 public:

@@ -15,6 +15,7 @@ namespace scatterer_render
 {
 namespace il = scatterer::illumination;
 
+/** The mapper's settings for one frame, by value: what the stage helpers read. */
 struct IlluminationParameters
 {
   bool Enabled = il::Illumination.Default;

@@ -28,6 +28,10 @@ class vtkShaderProgram;
 
 namespace scatterer_render
 {
+/**
+ * Brackets the ray caster's render and tells whether its illumination program
+ * compiled, through the window's shader cache (see above for the one exception).
+ */
 class ShaderCompileCheck
 {
 public:

@@ -34,6 +34,10 @@ namespace scatterer_render
 struct IlluminationParameters;
 class WarnOnce;
 
+/**
+ * The templates of the frame's materials: generated when the materials or generator
+ * settings change, repacked when PhotonCap changes, uploaded per context when repacked.
+ */
 class TemplateCache
 {
 public:

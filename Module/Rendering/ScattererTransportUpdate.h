@@ -48,6 +48,10 @@ struct TransportSource
   std::function<void(double)> Progress;
 };
 
+/**
+ * Owns the light transport volume and its mask texture, and fills the transport
+ * volume's inputs from each frame (tables only when their key changes).
+ */
 class TransportUpdate
 {
 public:

@@ -33,6 +33,10 @@ struct FrameTextures
   int PackedWidth = 0;
 };
 
+/**
+ * Installs a frame's GLSL and st_* uniforms on the volume and binds the texture its
+ * shader samples around the ray caster's render.
+ */
 class UniformInstaller
 {
 public:

@@ -13,6 +13,7 @@
 
 namespace scatterer_render
 {
+/** Raises each distinct warning once on its owner. */
 class WarnOnce
 {
 public:
