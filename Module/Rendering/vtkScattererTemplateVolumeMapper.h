@@ -116,6 +116,11 @@
   vtkBooleanMacro(name, bool)
 
 class vtkScattererTransportVolume;
+namespace scatterer_render
+{
+struct FramePlan;
+struct IlluminationParameters;
+}
 
 class SCATTERERTEMPLATE_EXPORT vtkScattererTemplateVolumeMapper
   : public vtkOpenGLGPUVolumeRayCastMapper
@@ -348,7 +353,13 @@ public:
   }
   ///@}
 
-  /** Time of the last change to an illumination parameter. */
+  /**
+   * Time of the last change to an illumination parameter (any setter above, or the
+   * requested materials), for users and pipelines that watch the settings. The
+   * mapper itself does not rebuild by it: what it keeps between frames (templates,
+   * transport tables, shader texts) follows keys of the values it was made from, so a
+   * setting that only feeds a uniform rebuilds nothing.
+   */
   vtkMTimeType GetIlluminationMTime() const { return this->IlluminationTime.GetMTime(); }
 
   /**
@@ -416,19 +427,21 @@ private:
   struct vtkInternals;
   std::unique_ptr<vtkInternals> Internals;
 
-  // The stages of GPURender, in order (vtkScattererTemplateVolumeMapper.cxx).
-  struct FramePlan;
+  // The stages of GPURender, in order; each hands its work to a helper that gets the
+  // settings as one VTK-free record (Module/Rendering/Scatterer*.h).
+  /** The settings, gathered for the helpers of one frame. */
+  scatterer_render::IlluminationParameters GatherParameters() const;
   /** What this frame needs, or why this volume renders as stock ("" if it can be lit). */
-  std::string PlanFrame(vtkRenderer* ren, vtkVolume* vol, FramePlan& plan);
-  /** Regenerates the templates when the materials or generator settings changed. */
-  std::string UpdateTemplates(const FramePlan& plan);
+  std::string PlanFrame(vtkRenderer* ren, vtkVolume* vol,
+    const scatterer_render::IlluminationParameters& parameters, scatterer_render::FramePlan& plan);
   /** Rebuilds the light transport volume if its inputs changed (transport mode). */
-  std::string UpdateTransport(vtkRenderer* ren, vtkVolume* vol, const FramePlan& plan);
-  /** The medium, material and kernel tables of the transport volume's inputs. */
-  void UpdateTransportTables(
-    vtkVolume* vol, const FramePlan& plan, double lo, double hi, double unit);
+  std::string UpdateTransport(vtkRenderer* ren, vtkVolume* vol,
+    const scatterer_render::IlluminationParameters& parameters,
+    const scatterer_render::FramePlan& plan);
   /** Installs the GLSL and uniforms, then lets the stock ray caster render. */
-  std::string RenderIlluminated(vtkRenderer* ren, vtkVolume* vol, const FramePlan& plan);
+  std::string RenderIlluminated(vtkRenderer* ren, vtkVolume* vol,
+    const scatterer_render::IlluminationParameters& parameters,
+    const scatterer_render::FramePlan& plan);
   /** Renders as the stock mapper, recording why. */
   void RenderStock(vtkRenderer* ren, vtkVolume* vol, const std::string& reason);
 };

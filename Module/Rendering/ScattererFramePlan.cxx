@@ -1,0 +1,336 @@
+#include "ScattererFramePlan.h"
+
+#include "ScattererIlluminationParameters.h"
+#include "ScattererWarnOnce.h"
+
+#include "vtkAbstractMapper.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkMatrix4x4.h"
+#include "vtkMultiVolume.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkRectilinearGrid.h"
+#include "vtkVolume.h"
+#include "vtkVolumeMapper.h"
+#include "vtkVolumeProperty.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <sstream>
+
+namespace scatterer_render
+{
+namespace
+{
+const char* BlendModeName(int mode)
+{
+  switch (mode)
+  {
+    case vtkVolumeMapper::COMPOSITE_BLEND:
+      return "composite";
+    case vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND:
+      return "maximum intensity";
+    case vtkVolumeMapper::MINIMUM_INTENSITY_BLEND:
+      return "minimum intensity";
+    case vtkVolumeMapper::AVERAGE_INTENSITY_BLEND:
+      return "average intensity";
+    case vtkVolumeMapper::ADDITIVE_BLEND:
+      return "additive";
+    case vtkVolumeMapper::ISOSURFACE_BLEND:
+      return "isosurface";
+    case vtkVolumeMapper::SLICE_BLEND:
+      return "slice";
+    default:
+      return "unknown";
+  }
+}
+
+// Why illumination cannot apply to this volume, or "" if it can.
+std::string Unsupported(
+  const VolumeSource& source, const IlluminationParameters& parameters, vtkVolume* vol)
+{
+  if (source.BlendMode != vtkVolumeMapper::COMPOSITE_BLEND)
+  {
+    return std::string("the ") + BlendModeName(source.BlendMode) +
+      " blend mode (illumination needs composite blending)";
+  }
+  if (vtkMultiVolume::SafeDownCast(vol))
+  {
+    return "a vtkMultiVolume (several inputs)";
+  }
+  if (vtkRectilinearGrid::SafeDownCast(source.Input))
+  {
+    return "a rectilinear-grid input";
+  }
+  if (source.Mask && !parameters.Transport())
+  {
+    // The per-sample photon test would still see masked-out matter as occluders.
+    return "a mask input in per-sample mode (the transport mode honours binary masks)";
+  }
+  if (source.UseDepthPass)
+  {
+    return "the depth pass (UseDepthPass)";
+  }
+  if (vol->GetProperty()->GetTransferFunctionMode() != vtkVolumeProperty::TF_1D)
+  {
+    return "2D transfer functions";
+  }
+  return "";
+}
+}
+
+FramePlanner::FramePlanner() = default;
+FramePlanner::~FramePlanner() = default;
+
+std::string FramePlanner::Plan(vtkRenderer* ren, vtkVolume* vol, const VolumeSource& source,
+  const IlluminationParameters& parameters, const PlanRequests& requests, WarnOnce& warn,
+  FramePlan& plan)
+{
+  if (!parameters.Enabled)
+  {
+    return "illumination off";
+  }
+  const std::string unsupported = Unsupported(source, parameters, vol);
+  if (!unsupported.empty())
+  {
+    warn("Scatterer-template illumination does not apply to " + unsupported +
+      "; this volume renders as vtkOpenGLGPUVolumeRayCastMapper would.");
+    return unsupported;
+  }
+  plan.Image = vtkImageData::SafeDownCast(source.Input);
+  plan.Scalars = plan.Image ? vtkAbstractMapper::GetScalars(plan.Image, source.ScalarMode,
+                                source.ArrayAccessMode, source.ArrayId, source.ArrayName,
+                                plan.CellFlag)
+                            : nullptr;
+  if (!plan.Scalars)
+  {
+    return "no scalars";
+  }
+  if (plan.Scalars->GetNumberOfComponents() != 1)
+  {
+    warn("Scatterer-template illumination needs single-component scalars (intensities or "
+         "a label map); these have " +
+      std::to_string(plan.Scalars->GetNumberOfComponents()) +
+      " components, so this volume renders as vtkOpenGLGPUVolumeRayCastMapper would.");
+    return "multi-component scalars";
+  }
+  plan.Lights = scatterer_scene::CollectLights(ren, vol->GetProperty());
+  if (plan.Lights.Count() == 0)
+  {
+    return "no light is switched on";
+  }
+  if (plan.Lights.Skipped > 0)
+  {
+    warn("Scatterer-template illumination uses the first 6 lights (VTK's limit); " +
+      std::to_string(plan.Lights.Skipped) + " more are ignored.");
+  }
+  std::string stock = this->PlanGeometry(vol, parameters, warn, plan);
+  if (stock.empty())
+  {
+    stock = this->PlanMaterials(vol, source, parameters, requests, warn, plan);
+  }
+  if (stock.empty())
+  {
+    stock = this->PlanFeatures(vol, source, parameters, requests, plan);
+  }
+  return stock;
+}
+
+// Template radius and the world -> texture mapping of photon offsets.
+std::string FramePlanner::PlanGeometry(
+  vtkVolume* vol, const IlluminationParameters& parameters, WarnOnce& warn, FramePlan& plan)
+{
+  vtkImageData* image = plan.Image;
+  double spacing[3];
+  int dims[3];
+  image->GetSpacing(spacing);
+  image->GetDimensions(dims);
+  vtkMatrix4x4* volumeMatrix = vol->GetMatrix();
+  double columnLength[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    columnLength[c] = std::sqrt(volumeMatrix->GetElement(0, c) * volumeMatrix->GetElement(0, c) +
+      volumeMatrix->GetElement(1, c) * volumeMatrix->GetElement(1, c) +
+      volumeMatrix->GetElement(2, c) * volumeMatrix->GetElement(2, c));
+  }
+  const double meanSpacing = (std::abs(spacing[0]) * columnLength[0] +
+                               std::abs(spacing[1]) * columnLength[1] +
+                               std::abs(spacing[2]) * columnLength[2]) / 3.0;
+  plan.Radius = parameters.TemplateRadius > 0.0 ? parameters.TemplateRadius : 10.0 * meanSpacing;
+  if (!(plan.Radius > 0.0) || !std::isfinite(plan.Radius))
+  {
+    warn("Scatterer-template illumination needs a positive, finite voxel spacing or "
+         "TemplateRadius; this volume renders as vtkOpenGLGPUVolumeRayCastMapper would.");
+    return "degenerate spacing";
+  }
+  vtkNew<vtkMatrix4x4> inverse;
+  vtkMatrix4x4::Invert(volumeMatrix, inverse);
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    for (int row = 0; row < 3; ++row)
+    {
+      // data offset of one template radius along world `axis`, then texels -> [0,1]
+      const double data = inverse->GetElement(row, axis) * plan.Radius;
+      const int texels = std::max(1, plan.CellFlag ? dims[row] - 1 : dims[row]);
+      const double tex = data / (spacing[row] * texels);
+      plan.ToTex[axis][row] = std::isfinite(tex) ? static_cast<float>(tex) : 0.0f;
+    }
+  }
+  return "";
+}
+
+std::string FramePlanner::PlanMaterials(vtkVolume* vol, const VolumeSource& source,
+  const IlluminationParameters& parameters, const PlanRequests& requests, WarnOnce& warn,
+  FramePlan& plan)
+{
+  vtkVolumeProperty* property = vol->GetProperty();
+  double range[2];
+  plan.Scalars->GetFiniteRange(range, 0);
+  // Materials are derived over the derivation range when one is set (a piece of a
+  // split volume: the whole volume's range), so every piece derives the same ones.
+  double derivation[2] = { range[0], range[1] };
+  if (parameters.MaterialDerivationRange[0] <= parameters.MaterialDerivationRange[1])
+  {
+    derivation[0] = parameters.MaterialDerivationRange[0];
+    derivation[1] = parameters.MaterialDerivationRange[1];
+  }
+  const auto& requested = *requests.Materials;
+  vtkVolumeProperty* materialProperty =
+    this->MaterialProperty(property, source.Mask && source.LabelMapMask, derivation);
+  plan.Materials =
+    scatterer_scene::BuildMaterials(requested, materialProperty, range, derivation);
+  plan.MaterialsBuilt = true;
+  if (plan.Materials.Materials.empty())
+  {
+    return "no material: the opacity transfer function is below 1e-4 everywhere";
+  }
+  if (plan.Materials.Dropped > 0)
+  {
+    warn("Scatterer-template illumination handles 8 materials; " +
+      std::to_string(plan.Materials.Dropped) + " more stay unlit.");
+  }
+  if (!requested.empty())
+  {
+    this->WarnUnassigned(property, range, warn, plan);
+  }
+  return "";
+}
+
+// With a label-map mask, what is visible is what any label's opacity function (or the
+// volume's own, label 0) makes visible: materials are derived from their maximum,
+// tabulated again only when a function or the range changes (not every frame).
+vtkVolumeProperty* FramePlanner::MaterialProperty(
+  vtkVolumeProperty* property, bool labelMapMask, const double derivation[2])
+{
+  if (!labelMapMask)
+  {
+    return property;
+  }
+  const std::set<int> labels = property->GetLabelMapLabels();
+  KeyWriter key;
+  key << property->GetScalarOpacity(0)->GetMTime() << '|'
+      << property->GetRGBTransferFunction(0)->GetMTime() << '|' << derivation[0] << ','
+      << derivation[1];
+  for (int label : labels)
+  {
+    vtkPiecewiseFunction* o = property->GetLabelScalarOpacity(label);
+    key << '|' << label << ':' << (o ? o->GetMTime() : 0);
+  }
+  if (this->LabelUnionKey.Differs(key.Key()))
+  {
+    vtkNew<vtkPiecewiseFunction> visible;
+    const int samples = 256;
+    for (int i = 0; i < samples; ++i)
+    {
+      const double x = derivation[0] + (derivation[1] - derivation[0]) * i / (samples - 1.0);
+      double alpha = property->GetScalarOpacity(0)->GetValue(x);
+      for (int label : labels)
+      {
+        if (vtkPiecewiseFunction* o = property->GetLabelScalarOpacity(label))
+        {
+          alpha = std::max(alpha, o->GetValue(x));
+        }
+      }
+      visible->AddPoint(x, alpha);
+    }
+    this->LabelUnion->SetColor(property->GetRGBTransferFunction(0));
+    this->LabelUnion->SetScalarOpacity(visible);
+    this->LabelUnionKey.Record(key.Key());
+  }
+  this->LabelUnion->SetScalarOpacityUnitDistance(property->GetScalarOpacityUnitDistance());
+  return this->LabelUnion;
+}
+
+// Visible voxels that no requested material selects: scanned once per change of the
+// data, the transfer function or the materials.
+void FramePlanner::WarnUnassigned(
+  vtkVolumeProperty* property, const double range[2], WarnOnce& warn, const FramePlan& plan)
+{
+  KeyWriter key;
+  key << plan.Scalars << '|' << plan.Scalars->GetMTime() << '|'
+      << property->GetScalarOpacity(0)->GetMTime() << '|' << range[0] << ',' << range[1];
+  for (const auto& m : plan.Materials.Materials)
+  {
+    key << '|' << m.Physics.selector.lo << ',' << m.Physics.selector.hi << ','
+        << m.Physics.selector.label;
+  }
+  if (!this->UnassignedKey.Differs(key.Key()))
+  {
+    return;
+  }
+  this->UnassignedKey.Record(key.Key());
+  const auto unassigned =
+    scatterer_scene::CountUnassigned(plan.Scalars, plan.Materials, property, range);
+  if (unassigned.Count > 0)
+  {
+    std::ostringstream what;
+    what << unassigned.Count << " visible voxels (e.g. scalar value " << unassigned.Example
+         << ") belong to none of the requested materials: they are drawn and cast shadows, "
+            "but receive light without in-scattering (add a material for them to fix this).";
+    warn(what.str());
+  }
+}
+
+// Which code paths this scene needs, and their GLSL.
+std::string FramePlanner::PlanFeatures(vtkVolume* vol, const VolumeSource& source,
+  const IlluminationParameters& parameters, const PlanRequests& requests, FramePlan& plan)
+{
+  const bool automatic = parameters.Automatic();
+  const auto& mats = plan.Materials.Materials;
+  bool colorsDiffer = false, indicesDiffer = false;
+  for (const auto& m : mats)
+  {
+    colorsDiffer = colorsDiffer || m.Physics.diffuse != mats[0].Physics.diffuse;
+    indicesDiffer = indicesDiffer || m.Physics.refractiveIndex != mats[0].Physics.refractiveIndex ||
+      m.Physics.opacity != mats[0].Physics.opacity;
+  }
+  scatterer_shader::Features& f = plan.Features;
+  f.Lights = plan.Lights.Count();
+  f.Materials = static_cast<int>(mats.size());
+  f.Transport = parameters.Transport();
+  f.Shadow = parameters.Shadows;
+  // The thin-part check and template blending belong to the per-sample photon test.
+  f.Thin = !f.Transport && f.Shadow && parameters.ThinPartCheck &&
+    (!automatic || parameters.LongRangeMultiple > 1.0);
+  f.Bleed = parameters.ColorBleeding && (!automatic || (f.Materials > 1 && colorsDiffer));
+  f.Boundary = parameters.BoundaryRefraction && f.Materials > 1 && (!automatic || indicesDiffer);
+  f.Positional = plan.Lights.AnyPositional;
+  f.Blend2 = !f.Transport && parameters.TemplateBlending;
+  f.Phong = vol->GetProperty()->GetShade() != 0;
+  f.LabelMask = source.Mask && source.LabelMapMask;
+  if (automatic && !f.Shadow && !f.Bleed && !f.Boundary)
+  {
+    return "no illumination effect is switched on";
+  }
+  plan.Declarations = scatterer_shader::IlluminationDeclarations(f) + requests.ExtraGLSL;
+  plan.ShadingInit = scatterer_shader::ShadingInitialization(f);
+  plan.Shading = scatterer_shader::ShadingImplementation(f);
+  if (requests.FailedShaders->Contains(plan.ShaderKey()))
+  {
+    return "the illumination shader failed to compile here";
+  }
+  return "";
+}
+}

@@ -1,0 +1,117 @@
+// The first stage of every illuminated frame: what this scene needs, or why it
+// renders as the stock ray caster.
+//
+// FramePlanner checks that illumination applies (blend mode, input kind, scalars,
+// mask, depth pass, transfer-function mode), collects the lights, derives the
+// template radius and the materials, and chooses the shader's code paths and
+// GLSL. It keeps between frames only what is expensive to redo when nothing
+// changed: a label-map mask's visible opacity and the scan for unassigned voxels,
+// each behind its change key (ScattererChangeKey.h).
+#ifndef ScattererFramePlan_h
+#define ScattererFramePlan_h
+
+#include "ScattererChangeKey.h"
+#include "ScattererSceneLights.h"
+#include "ScattererSceneMaterials.h"
+#include "ScattererShaderComposer.h"
+
+#include "vtkNew.h"
+
+#include <string>
+#include <vector>
+
+class vtkDataArray;
+class vtkDataSet;
+class vtkImageData;
+class vtkRenderer;
+class vtkVolume;
+class vtkVolumeProperty;
+
+namespace scatterer_render
+{
+struct IlluminationParameters;
+class WarnOnce;
+
+/** Everything one frame of illumination needs, decided before rendering. */
+struct FramePlan
+{
+  scatterer_shader::Features Features;
+  scatterer_scene::LightSet Lights;
+  scatterer_scene::MaterialSet Materials;
+  bool MaterialsBuilt = false; ///< Materials were derived this frame (even if none)
+  vtkImageData* Image = nullptr;
+  vtkDataArray* Scalars = nullptr;
+  int CellFlag = 0;
+  double Radius = 1.0;    ///< template radius, world units
+  float ToTex[3][3] = {}; ///< per-sample mode: texture offset of one radius along world x, y, z
+  std::string Declarations, ShadingInit, Shading; ///< this frame's GLSL
+
+  /** Identifies this frame's shader text (ScattererChangeKey.h). */
+  std::string ShaderKey() const { return this->Declarations + this->ShadingInit + this->Shading; }
+};
+
+/** What the mapper renders, as the planner reads it (the mapper's public state). */
+struct VolumeSource
+{
+  vtkDataSet* Input = nullptr;
+  vtkImageData* Mask = nullptr;
+  bool LabelMapMask = false; ///< Mask is a label map (VTK's LabelMapMaskType)
+  int BlendMode = 0;
+  bool UseDepthPass = false;
+  int ScalarMode = 0, ArrayAccessMode = 0, ArrayId = -1;
+  const char* ArrayName = nullptr;
+};
+
+/** The materials the user asked for, and shader texts known not to compile here. */
+struct PlanRequests
+{
+  const std::vector<scatterer_scene::RequestedMaterial>* Materials = nullptr;
+  std::string ExtraGLSL; ///< for tests: appended to the declarations
+  const KeySet* FailedShaders = nullptr;
+};
+
+/**
+ * Decides each frame what the illumination needs (FramePlan) or why the volume renders
+ * as stock; keeps only the label-union opacity and the unassigned-voxel scan between frames.
+ */
+class FramePlanner
+{
+public:
+  FramePlanner();
+  ~FramePlanner();
+  FramePlanner(const FramePlanner&) = delete;
+  FramePlanner& operator=(const FramePlanner&) = delete;
+
+  /**
+   * Fills @p plan for rendering @p source in @p volume with @p renderer; returns ""
+   * when the frame can be illuminated, or why it renders as stock (warning once,
+   * through @p warn, where the user asked for something that cannot be lit).
+   */
+  std::string Plan(vtkRenderer* renderer, vtkVolume* volume, const VolumeSource& source,
+    const IlluminationParameters& parameters, const PlanRequests& requests, WarnOnce& warn,
+    FramePlan& plan);
+
+private:
+  std::string PlanGeometry(vtkVolume* volume, const IlluminationParameters& parameters,
+    WarnOnce& warn, FramePlan& plan);
+  std::string PlanMaterials(vtkVolume* volume, const VolumeSource& source,
+    const IlluminationParameters& parameters, const PlanRequests& requests, WarnOnce& warn,
+    FramePlan& plan);
+  /** The volume property materials are derived from (a label-map mask: the union of its labels). */
+  vtkVolumeProperty* MaterialProperty(
+    vtkVolumeProperty* property, bool labelMapMask, const double derivation[2]);
+  void WarnUnassigned(
+    vtkVolumeProperty* property, const double range[2], WarnOnce& warn, const FramePlan& plan);
+  std::string PlanFeatures(vtkVolume* volume, const VolumeSource& source,
+    const IlluminationParameters& parameters, const PlanRequests& requests, FramePlan& plan);
+
+  // A label-map mask: the opacity materials are derived from (the largest any label
+  // gives a scalar), and what it was tabulated from.
+  vtkNew<vtkVolumeProperty> LabelUnion;
+  ChangeKey LabelUnionKey;
+  // The data, transfer function and materials last scanned for unassigned voxels.
+  ChangeKey UnassignedKey;
+};
+}
+
+#endif

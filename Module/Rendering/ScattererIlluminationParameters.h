@@ -1,0 +1,64 @@
+// The mapper's illumination settings for one frame, as one plain record with no VTK.
+//
+// vtkScattererTemplateVolumeMapper keeps its settings as members (its setters clamp
+// them and its subclasses may read them) and gathers them here once per frame; the
+// helpers that plan, generate, feed and install the frame (ScattererFramePlan,
+// ScattererTemplateCache, ScattererTransportUpdate, ScattererUniformInstaller) take
+// this record by const reference instead of a pointer back into the mapper. Defaults
+// are those of scatterer/IlluminationSettings.h, where each is written once.
+#ifndef ScattererIlluminationParameters_h
+#define ScattererIlluminationParameters_h
+
+#include "scatterer/IlluminationSettings.h"
+
+namespace scatterer_render
+{
+namespace il = scatterer::illumination;
+
+/** The mapper's settings for one frame, by value: what the stage helpers read. */
+struct IlluminationParameters
+{
+  bool Enabled = il::Illumination.Default;
+  bool Shadows = il::Shadows.Default;
+  bool ColorBleeding = il::ColorBleeding.Default;
+  bool ThinPartCheck = il::ThinPartCheck.Default;
+  bool BoundaryRefraction = il::BoundaryRefraction.Default;
+  bool TemplateBlending = il::TemplateBlending.Default;
+  bool CroppedMatterCastsShadows = il::CroppedMatterCastsShadows.Default;
+  int ShaderPathSelection = il::ShaderPathSelection.Default;
+  int IlluminationMode = il::IlluminationMode.Default;
+  int TransportScale = il::TransportScale.Default;
+  int InteractiveTransportScale = il::InteractiveTransportScale.Default;
+  double MultipleScattering = il::MultipleScattering.Default;
+  double TemplateRadius = il::TemplateRadius.Default;
+  int TemplatesPerMaterial = il::TemplatesPerMaterial.Default;
+  int PhotonCap = il::PhotonCap.Default;
+  double OcclusionStrength = il::OcclusionStrength.Default;
+  double LongRangeMultiple = il::LongRangeMultiple.Default;
+  int IlluminationInterval = il::IlluminationInterval.Default;
+  double PhotonThreshold = il::PhotonThreshold.Default;
+  double GeneratorThreshold = il::GeneratorThreshold.Default;
+  /// Scalar range materials are derived over; lo > hi: the input's data range.
+  double MaterialDerivationRange[2] = { 1.0, 0.0 };
+
+  bool Transport() const { return this->IlluminationMode == il::Transport; }
+  bool Automatic() const { return this->ShaderPathSelection == il::Automatic; }
+};
+
+/**
+ * OcclusionStrength as a shader reads it: the factor on the optical depth of occluders.
+ *
+ * Each illumination path integrates optical depth over distances in its own length
+ * unit, so the factor is the strength times the world length of that unit, and a
+ * strength of 1 is physical in both: the transport volume measures in world units
+ * (unit 1; vtkScattererTransportVolume::Inputs::ExtinctionScale), the per-sample
+ * photon test in template radii (unit: the radius; the st_occlusionScale uniform,
+ * scatterer_illumination_dec.glsl st_transmittance).
+ */
+inline float OcclusionScale(double occlusionStrength, double worldLengthOfUnit)
+{
+  return static_cast<float>(occlusionStrength * worldLengthOfUnit);
+}
+}
+
+#endif

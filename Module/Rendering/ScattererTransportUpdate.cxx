@@ -1,0 +1,334 @@
+#include "ScattererTransportUpdate.h"
+
+#include "ScattererFramePlan.h"
+#include "ScattererIlluminationParameters.h"
+#include "ScattererTemplateCache.h"
+#include "ScattererWarnOnce.h"
+
+#include "vtkColorTransferFunction.h"
+#include "vtkImageData.h"
+#include "vtkMatrix3x3.h"
+#include "vtkMatrix4x4.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPlane.h"
+#include "vtkPlaneCollection.h"
+#include "vtkRenderer.h"
+#include "vtkTextureObject.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+#include "vtkVolumeTexture.h"
+
+#include <scatterer/Material.h>
+#include <scatterer/Transport.h>
+
+#include <algorithm>
+
+namespace scatterer_render
+{
+namespace
+{
+// Entries of the medium and material tables over the scalar range.
+constexpr int kTableSize = 4096;
+
+// One row of the medium over the table coordinate: albedo from @p color (white when
+// none), extinction from @p opacity per @p unit distance.
+void TabulateMedium(float* row, vtkColorTransferFunction* color, vtkPiecewiseFunction* gray,
+  vtkPiecewiseFunction* opacity, double lo, double hi, double unit)
+{
+  for (int i = 0; i < kTableSize; ++i)
+  {
+    const double value = lo + (hi - lo) * i / (kTableSize - 1.0);
+    double rgb[3] = { 1.0, 1.0, 1.0 };
+    if (gray)
+    {
+      rgb[0] = rgb[1] = rgb[2] = gray->GetValue(value);
+    }
+    else if (color)
+    {
+      color->GetColor(value, rgb);
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      row[4 * i + c] = static_cast<float>(std::min(std::max(rgb[c], 0.0), 1.0));
+    }
+    row[4 * i + 3] =
+      static_cast<float>(scatterer::extinctionFromOpacity(opacity->GetValue(value), unit));
+  }
+}
+}
+
+TransportUpdate::TransportUpdate() = default;
+TransportUpdate::~TransportUpdate() = default;
+
+std::string TransportUpdate::Update(vtkRenderer* ren, vtkVolume* vol, const FramePlan& plan,
+  const IlluminationParameters& parameters, const TemplateCache& templates,
+  const TransportSource& source, WarnOnce& warn, std::string& error)
+{
+  vtkVolumeTexture* volumeTexture = source.VolumeTexture;
+  if (!volumeTexture || volumeTexture->GetPartitions()[0] * volumeTexture->GetPartitions()[1] *
+        volumeTexture->GetPartitions()[2] != 1)
+  {
+    warn("Scatterer-template illumination does not apply to a partitioned volume (one "
+         "3D texture per block); this volume renders as vtkOpenGLGPUVolumeRayCastMapper would.");
+    return "a partitioned volume";
+  }
+  vtkVolumeTexture::VolumeBlock* block = volumeTexture->GetCurrentBlock();
+  if (!block || !block->TextureObject)
+  {
+    return "the volume texture is not loaded";
+  }
+  auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  vtkScattererTransportVolume::Inputs& t = this->Inputs;
+  t.Volume = block->TextureObject;
+  // Scale and bias as the ray caster applies them (64-bit types come pre-scaled).
+  t.ScalarScale = volumeTexture->HandleLargeDataTypes ? 1.0f : volumeTexture->Scale[0];
+  t.ScalarBias = volumeTexture->HandleLargeDataTypes ? 0.0f : volumeTexture->Bias[0];
+  t.VolumeUploadTime = volumeTexture->UploadTime.GetMTime();
+  // A binary mask: masked-out matter neither shows (the ray caster's mask) nor casts
+  // shadow or scatters (the transport volume). A label-map mask: each label's medium
+  // comes from its own transfer functions, in the picture and in the light.
+  t.Mask = nullptr;
+  t.MaskUploadTime = 0;
+  t.LabelMask = plan.Features.LabelMask;
+  t.MaskBlend = source.MaskBlend;
+  if (source.Mask)
+  {
+    const int volumeDims[3] = { static_cast<int>(block->TextureObject->GetWidth()),
+      static_cast<int>(block->TextureObject->GetHeight()),
+      static_cast<int>(block->TextureObject->GetDepth()) };
+    std::string why;
+    t.Mask = this->Mask.Update(renWin, source.Mask, volumeDims, why);
+    if (!t.Mask)
+    {
+      warn("Scatterer-template illumination cannot use this mask: " + why +
+        "; this volume renders as vtkOpenGLGPUVolumeRayCastMapper would.");
+      return "an unusable mask";
+    }
+    t.MaskUploadTime = this->Mask.GetUploadTime();
+  }
+  this->UpdateGeometry(vol, plan, source, parameters);
+
+  // The medium over the table coordinate (VTK's tables span the scalar range): albedo
+  // from the colour transfer function, extinction from the opacity transfer function.
+  vtkVolumeProperty* property = vol->GetProperty();
+  const double unit = property->GetScalarOpacityUnitDistance(0) > 0.0
+    ? property->GetScalarOpacityUnitDistance(0)
+    : 1.0;
+  const double lo = volumeTexture->ScalarRange[0][0], hi = volumeTexture->ScalarRange[0][1];
+  // The tables change with the transfer functions, the range, the materials, the
+  // templates and the kernel settings only: rebuilt then, not every frame, and the
+  // transport volume is told by TablesVersion.
+  KeyWriter key;
+  const bool gray = property->GetColorChannels(0) == 1;
+  key << property->GetScalarOpacity(0)->GetMTime() << '|'
+      << (gray ? property->GetGrayTransferFunction(0)->GetMTime()
+               : property->GetRGBTransferFunction(0)->GetMTime())
+      << '|' << gray << '|' << lo << ',' << hi << '|' << unit << '|'
+      << templates.GetGenerationKey() << '|' << parameters.PhotonCap << '|' << plan.Radius;
+  // A label-map mask adds one medium row per label: its transfer functions count too.
+  key << '|' << plan.Features.LabelMask;
+  if (plan.Features.LabelMask)
+  {
+    key << ',' << property->GetLabelColorMTime().GetMTime() << ','
+        << property->GetLabelScalarOpacityMTime().GetMTime();
+    for (int label : property->GetLabelMapLabels())
+    {
+      vtkColorTransferFunction* c = property->GetLabelColor(label);
+      vtkPiecewiseFunction* o = property->GetLabelScalarOpacity(label);
+      key << ',' << label << ':' << (c ? c->GetMTime() : 0) << ':' << (o ? o->GetMTime() : 0);
+    }
+  }
+  for (const auto& m : plan.Materials.Materials)
+  {
+    key << '|' << m.Physics.selector.lo << ',' << m.Physics.selector.hi << ','
+        << m.Physics.selector.label << ',' << static_cast<int>(m.Physics.selector.kind) << ','
+        << m.OpacityPerUnit << ',' << m.Physics.refractiveIndex << ',' << m.Physics.diffuse.x
+        << ',' << m.Physics.diffuse.y << ',' << m.Physics.diffuse.z;
+  }
+  if (this->Tables.Differs(key.Key()))
+  {
+    this->UpdateTables(vol, plan, parameters, templates, lo, hi, unit);
+    this->Tables.Record(key.Key());
+    ++t.TablesVersion;
+  }
+  // Occlusion off: nothing along a light path absorbs (OcclusionScale in world units).
+  t.ExtinctionScale =
+    plan.Features.Shadow ? OcclusionScale(parameters.OcclusionStrength, 1.0) : 0.0f;
+  this->UpdateLights(plan);
+  t.Bleed = plan.Features.Bleed;
+  t.Boundary = plan.Features.Boundary;
+  t.MultipleScattering = static_cast<float>(parameters.MultipleScattering);
+
+  // Interactive frames (a time budget under a second) build the volume coarser, but
+  // only when it must be rebuilt at all: while the user orbits under a scene light,
+  // the still frames' volume stays valid, and a coarse one would cost a build now and
+  // another when the user lets go.
+  t.Downsample = parameters.TransportScale;
+  const bool interactive = vol->GetAllocatedRenderTime() < 1.0;
+  if (interactive && !this->Transport->IsCurrent(renWin, t))
+  {
+    t.Downsample = parameters.InteractiveTransportScale;
+  }
+  if (source.Progress && !this->Transport->IsCurrent(renWin, t))
+  {
+    source.Progress(0.0);
+    this->Transport->SetProgressCallback(source.Progress);
+  }
+  else
+  {
+    this->Transport->SetProgressCallback(nullptr);
+  }
+  std::string why;
+  if (!this->Transport->Update(renWin, t, why))
+  {
+    error = "The light transport volume could not be built: " + why +
+      "; this volume renders as vtkOpenGLGPUVolumeRayCastMapper would.";
+    return "the light transport volume could not be built";
+  }
+  return "";
+}
+
+void TransportUpdate::UpdateGeometry(vtkVolume* vol, const FramePlan& plan,
+  const TransportSource& source, const IlluminationParameters& parameters)
+{
+  vtkScattererTransportVolume::Inputs& t = this->Inputs;
+  vtkTextureObject* texture = t.Volume;
+  // Texture coordinate -> structured index -> physical (origin, spacing, direction)
+  // -> world (the volume's matrix). Texel centre (i + 0.5) / N holds data point i
+  // (cell data: the centre of cell i), so distances are the data's own.
+  vtkNew<vtkMatrix4x4> texToIndex, indexToDataset, texToDataset, texToWorld;
+  int extent[6];
+  plan.Image->GetExtent(extent);
+  const unsigned int texels[3] = { texture->GetWidth(), texture->GetHeight(),
+    texture->GetDepth() };
+  for (int a = 0; a < 3; ++a)
+  {
+    texToIndex->SetElement(a, a, texels[a]);
+    texToIndex->SetElement(a, 3, extent[2 * a] - 0.5 + (plan.CellFlag ? 0.5 : 0.0));
+    t.IndexOrigin[a] = extent[2 * a];
+  }
+  plan.Image->ComputeIndexToPhysicalMatrix(plan.Image->GetOrigin(), plan.Image->GetSpacing(),
+    plan.Image->GetDirectionMatrix()->GetData(), indexToDataset->GetData());
+  vtkMatrix4x4::Multiply4x4(indexToDataset, texToIndex, texToDataset);
+  vtkMatrix4x4::Multiply4x4(vol->GetMatrix(), texToDataset, texToWorld);
+  for (int i = 0; i < 16; ++i)
+  {
+    t.TexToWorld[i] = texToWorld->GetElement(i / 4, i % 4);
+    t.TexToDataset[i] = texToDataset->GetElement(i / 4, i % 4);
+  }
+  t.ClipPlanes.clear();
+  if (vtkPlaneCollection* planes = source.ClippingPlanes)
+  {
+    for (int p = 0; p < planes->GetNumberOfItems() && p < 6; ++p)
+    {
+      vtkPlane* plane = planes->GetItem(p);
+      double n[3], o[3];
+      plane->GetNormal(n);
+      plane->GetOrigin(o);
+      t.ClipPlanes.insert(t.ClipPlanes.end(), { static_cast<float>(n[0]),
+        static_cast<float>(n[1]), static_cast<float>(n[2]),
+        static_cast<float>(-(n[0] * o[0] + n[1] * o[1] + n[2] * o[2])) });
+    }
+  }
+  t.Cropping = source.Cropping && !parameters.CroppedMatterCastsShadows;
+  t.CropFlags = source.CropFlags;
+  for (int a = 0; a < 3; ++a)
+  {
+    t.CropMin[a] = static_cast<float>(source.CroppingRegionPlanes[2 * a]);
+    t.CropMax[a] = static_cast<float>(source.CroppingRegionPlanes[2 * a + 1]);
+  }
+}
+
+void TransportUpdate::UpdateLights(const FramePlan& plan)
+{
+  const auto& lights = plan.Lights;
+  auto& out = this->Inputs.Lights;
+  out.clear();
+  for (int l = 0; l < lights.Count(); ++l)
+  {
+    vtkScattererTransportVolume::Light light;
+    for (int c = 0; c < 3; ++c)
+    {
+      light.Toward[c] = lights.Direction[3 * l + c];
+      light.Position[c] = lights.Position[3 * l + c];
+      light.Color[c] = lights.Color[3 * l + c];
+      light.Ambient[c] = lights.AmbientColor[3 * l + c];
+      light.FocalDirection[c] = lights.FocalDirection[3 * l + c];
+      light.Attenuation[c] = lights.Attenuation[3 * l + c];
+    }
+    light.Positional = lights.Positional[l] != 0;
+    light.ConeCos = lights.ConeCos[l];
+    light.Exponent = lights.Exponent[l];
+    out.push_back(light);
+  }
+}
+
+void TransportUpdate::UpdateTables(vtkVolume* vol, const FramePlan& plan,
+  const IlluminationParameters& parameters, const TemplateCache& templates, double lo, double hi,
+  double unit)
+{
+  vtkScattererTransportVolume::Inputs& t = this->Inputs;
+  vtkVolumeProperty* property = vol->GetProperty();
+  const bool gray = property->GetColorChannels(0) == 1;
+  t.Medium.resize(4 * kTableSize);
+  TabulateMedium(t.Medium.data(), gray ? nullptr : property->GetRGBTransferFunction(0),
+    gray ? property->GetGrayTransferFunction(0) : nullptr, property->GetScalarOpacity(0), lo, hi,
+    unit);
+  // A label-map mask: row L holds label L's colour and opacity functions (rows 1..255;
+  // a label without functions is empty, as VTK's label table leaves it).
+  t.MediumRows = 1;
+  if (plan.Features.LabelMask)
+  {
+    t.MediumRows = 256;
+    t.Medium.resize(static_cast<size_t>(4) * kTableSize * t.MediumRows, 0.0f);
+    for (int label : property->GetLabelMapLabels())
+    {
+      vtkPiecewiseFunction* labelOpacity = property->GetLabelScalarOpacity(label);
+      if (label < 1 || label > 255 || !labelOpacity)
+      {
+        continue;
+      }
+      TabulateMedium(t.Medium.data() + static_cast<size_t>(4) * kTableSize * label,
+        property->GetLabelColor(label), nullptr, labelOpacity, lo, hi, unit);
+    }
+  }
+  const double tableRange[2] = { lo, hi };
+  t.MaterialTable = scatterer_scene::MaterialTable(plan.Materials, tableRange, kTableSize);
+  // Materials and their kernels: the merged templates, in the material's mean free
+  // paths (scatterer/Transport.h), at most one template radius.
+  const auto& mats = plan.Materials.Materials;
+  const auto& raw = templates.GetRawTemplates();
+  t.KernelWidth = std::max(1, parameters.PhotonCap);
+  t.MaterialColors.clear();
+  t.Kernels.clear();
+  for (size_t m = 0; m < mats.size(); ++m)
+  {
+    const auto& material = mats[m];
+    const glm::vec3 c = material.Physics.diffuse;
+    t.MaterialColors.insert(t.MaterialColors.end(), { c.x, c.y, c.z });
+    const double sigma = scatterer::extinctionFromOpacity(material.OpacityPerUnit, unit);
+    std::vector<scatterer::KernelPhoton> kernel;
+    if (m < raw.size())
+    {
+      kernel = scatterer::mergedKernel(raw[m], t.KernelWidth,
+        scatterer::kernelRadius(material.Physics, sigma, 0.0, plan.Radius));
+    }
+    for (int k = 0; k < t.KernelWidth; ++k)
+    {
+      const bool has = k < static_cast<int>(kernel.size());
+      t.Kernels.insert(t.Kernels.end(),
+        { has ? kernel[k].offset.x : 0.0f, has ? kernel[k].offset.y : 0.0f,
+          has ? kernel[k].offset.z : 0.0f, has ? kernel[k].weight : 0.0f });
+    }
+  }
+  t.SpeedRatios = scatterer_scene::SpeedRatios(plan.Materials);
+  t.OpacityRatios = scatterer_scene::OpacityRatios(plan.Materials);
+}
+
+void TransportUpdate::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->Transport->ReleaseGraphicsResources(window);
+  this->Mask.ReleaseGraphicsResources(window);
+}
+}

@@ -1,0 +1,96 @@
+// Transport mode: keeps the light transport volume (vtkScattererTransportVolume) up
+// to date with the frame.
+//
+// Each frame it fills the transport volume's Inputs record from the plan (lights,
+// materials, kernels), the ray caster's own volume texture, the mask, the clipping
+// planes and cropping, then lets the transport volume decide whether to rebuild. The
+// tables (medium, materials, kernels) cost milliseconds to tabulate, so they are
+// rebuilt only when their change key (transfer functions, range, materials, templates,
+// PhotonCap, radius; ScattererChangeKey.h) changes.
+#ifndef ScattererTransportUpdate_h
+#define ScattererTransportUpdate_h
+
+#include "ScattererChangeKey.h"
+#include "ScattererMaskTexture.h"
+#include "vtkScattererTransportVolume.h"
+
+#include "vtkNew.h"
+
+#include <functional>
+#include <string>
+
+class vtkImageData;
+class vtkPlaneCollection;
+class vtkRenderer;
+class vtkVolume;
+class vtkVolumeTexture;
+class vtkWindow;
+
+namespace scatterer_render
+{
+struct FramePlan;
+struct IlluminationParameters;
+class TemplateCache;
+class WarnOnce;
+
+/** What the transport reads of the mapper besides the plan (its public state). */
+struct TransportSource
+{
+  vtkVolumeTexture* VolumeTexture = nullptr; ///< the ray caster's own, loaded (PreLoadData)
+  vtkImageData* Mask = nullptr;
+  float MaskBlend = 1.0f;
+  vtkPlaneCollection* ClippingPlanes = nullptr;
+  bool Cropping = false;
+  int CropFlags = 0;
+  const double* CroppingRegionPlanes = nullptr; ///< 6 values: x min, x max, y min, ...
+  /// The transport stage's progress in [0, 1], or empty when nobody listens (each
+  /// report makes the build wait for the GPU).
+  std::function<void(double)> Progress;
+};
+
+/**
+ * Owns the light transport volume and its mask texture, and fills the transport
+ * volume's inputs from each frame (tables only when their key changes).
+ */
+class TransportUpdate
+{
+public:
+  TransportUpdate();
+  ~TransportUpdate();
+  TransportUpdate(const TransportUpdate&) = delete;
+  TransportUpdate& operator=(const TransportUpdate&) = delete;
+
+  /**
+   * Rebuilds the transport volume if anything it depends on changed. Returns "" or
+   * why the volume renders as stock; @p error is set when that is an error to raise
+   * (the build failed), rather than a warning said through @p warn.
+   */
+  std::string Update(vtkRenderer* renderer, vtkVolume* volume, const FramePlan& plan,
+    const IlluminationParameters& parameters, const TemplateCache& templates,
+    const TransportSource& source, WarnOnce& warn, std::string& error);
+
+  vtkScattererTransportVolume* GetVolume() const { return this->Transport; }
+
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+private:
+  /** Where the volume texture lies (texture -> dataset -> world) and what clips it. */
+  void UpdateGeometry(vtkVolume* volume, const FramePlan& plan, const TransportSource& source,
+    const IlluminationParameters& parameters);
+  void UpdateLights(const FramePlan& plan);
+  /** The medium, material and kernel tables, over the volume texture's scalar range. */
+  void UpdateTables(vtkVolume* volume, const FramePlan& plan,
+    const IlluminationParameters& parameters, const TemplateCache& templates, double lo,
+    double hi, double unit);
+
+  // The light transport volume (owns its textures and build key).
+  vtkNew<vtkScattererTransportVolume> Transport;
+  // The mask (binary or label map) as the transport volume reads it.
+  scatterer_gpu::MaskTexture Mask;
+  // What the transport volume is built from (kept between frames for the tables).
+  vtkScattererTransportVolume::Inputs Inputs;
+  ChangeKey Tables;
+};
+}
+
+#endif

@@ -1,0 +1,41 @@
+// Warnings about a scene (an unsupported input, lights or materials beyond a limit),
+// said once per mapper: a scene renders many frames, and the same warning every frame
+// would bury everything else. Raised on the mapper (its WarningEvent observers, or the
+// output window), as the mapper's own vtkWarningMacro would.
+#ifndef ScattererWarnOnce_h
+#define ScattererWarnOnce_h
+
+#include "vtkObject.h"
+#include "vtkSetGet.h"
+
+#include <set>
+#include <string>
+
+namespace scatterer_render
+{
+/** Raises each distinct warning once on its owner. */
+class WarnOnce
+{
+public:
+  /** @p owner: the object the warnings are raised on (the mapper). */
+  explicit WarnOnce(vtkObject* owner)
+    : Owner(owner)
+  {
+  }
+
+  /** Raises @p what on the owner, unless it was said before. */
+  void operator()(const std::string& what)
+  {
+    if (this->Said.insert(what).second)
+    {
+      vtkWarningWithObjectMacro(this->Owner, << what);
+    }
+  }
+
+private:
+  vtkObject* Owner;
+  std::set<std::string> Said;
+};
+}
+
+#endif
