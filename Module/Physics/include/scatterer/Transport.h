@@ -1,7 +1,7 @@
 // What the light transport volume takes from the physics: extinction in VTK's
 // opacity convention and the scatterer templates as an in-scattering kernel.
 // Plain C++17 + GLM (no VTK, no OpenGL); the GPU passes that use these live in
-// Module/Shaders/scatterer_transport_*.glsl.
+// Module/Transport/scatterer_transport_*.glsl.
 #pragma once
 
 #include <scatterer/Material.h>

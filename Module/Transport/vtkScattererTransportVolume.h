@@ -11,7 +11,7 @@
  * summed over the lights. The light scattered once is then spread by a diffusion
  * solve on a coarser grid (multiple scattering) and added. The ray caster reads
  * that texture once per sample. The equations are in
- * Shaders/scatterer_transport_*.glsl and docs/model.md.
+ * scatterer_transport_*.glsl beside it and docs/model.md.
  *
  * Both passes are fragment passes into textures (vtkOpenGLFramebufferObject,
  * vtkOpenGLQuadHelper) that read the mapper's scalar texture directly: there is no

@@ -1,5 +1,5 @@
 // The shader programs of the light transport passes (full-screen quads whose fragment
-// shaders are Shaders/scatterer_transport_*.glsl) and what binding them takes: the
+// shaders are scatterer_transport_*.glsl beside it) and what binding them takes: the
 // uniforms every medium-reading pass shares, and scoped texture bindings.
 #ifndef ScattererTransportPrograms_h
 #define ScattererTransportPrograms_h
