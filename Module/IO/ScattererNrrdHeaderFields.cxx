@@ -23,19 +23,16 @@ constexpr std::size_t kNrrdHeaderWindow = 0x400000 - 1;
 
 std::string ReadNrrdFields(const std::string& headerPath, NrrdFields* header)
 {
-  std::string problem;
   const long long headerFileBytes = FileBytes(headerPath);
   if (headerFileBytes < 0)
   {
-    problem = "the header cannot be opened.";
-    return problem;
+    return "the header cannot be opened.";
   }
   const std::string window = ReadBytes(headerPath, 0,
     static_cast<std::size_t>(std::min<long long>(headerFileBytes, kNrrdHeaderWindow)));
   if (window.compare(0, 4, "NRRD") != 0)
   {
-    problem = "not a NRRD file (no NRRD magic line).";
-    return problem;
+    return "not a NRRD file (no NRRD magic line).";
   }
   // The header ends at the first empty line ("\n\n" or "\n\r\n"); without one the whole
   // file is a header (a detached header).
@@ -65,15 +62,13 @@ std::string ReadNrrdFields(const std::string& headerPath, NrrdFields* header)
     // vtkNrrdReader parses with std::getline until an empty line; a last line without a
     // line end is returned again and again at the end of the text (the failed getline
     // leaves it in place), so the reader never stops.
-    problem = headerFileBytes > static_cast<long long>(kNrrdHeaderWindow)
+    return headerFileBytes > static_cast<long long>(kNrrdHeaderWindow)
       ? "the header has no empty line within its first 4 MiB."
       : "the header's last line has no line end, on which VTK's NRRD reader loops forever.";
-    return problem;
   }
   if (text.find('\0') != std::string::npos)
   {
-    problem = "the header holds a NUL byte, where vtkNrrdReader stops reading it.";
-    return problem;
+    return "the header holds a NUL byte, where vtkNrrdReader stops reading it.";
   }
 
   // Fields are "<name>: <value>" exactly (vtkNrrdReader neither trims nor lowercases the
@@ -106,8 +101,7 @@ std::string ReadNrrdFields(const std::string& headerPath, NrrdFields* header)
       "space directions", "endian", "line skip", "lineskip", "byte skip", "byteskip" };
     if (checked.count(name) && fields.count(name))
     {
-      problem = "the field '" + name + "' appears twice.";
-      return problem;
+      return "the field '" + name + "' appears twice.";
     }
     fields[name] = value;
     if (name == "dimension")
@@ -115,9 +109,8 @@ std::string ReadNrrdFields(const std::string& headerPath, NrrdFields* header)
       long long d = 0;
       if (!ParseInteger(value, &d) || d < 1 || d > 4)
       {
-        problem = "dimension is " + Quote(value) +
+        return "dimension is " + Quote(value) +
           "; VTK's NRRD reader reads 1 to 4 axes (up to 3 in space and one of values per voxel).";
-        return problem;
       }
       declaredDimension = axesInForce = static_cast<int>(d);
     }
@@ -126,8 +119,7 @@ std::string ReadNrrdFields(const std::string& headerPath, NrrdFields* header)
       // vtkNrrdReader takes any space to mean 3 axes (and refuses time).
       if (value.find("time") != std::string::npos)
       {
-        problem = "space " + Quote(value) + " has a time axis, which VTK's NRRD reader refuses.";
-        return problem;
+        return "space " + Quote(value) + " has a time axis, which VTK's NRRD reader refuses.";
       }
       axesInForce = 3;
     }
@@ -136,8 +128,7 @@ std::string ReadNrrdFields(const std::string& headerPath, NrrdFields* header)
       long long d = 0;
       if (!ParseInteger(value, &d) || d < 1 || d > 4)
       {
-        problem = "space dimension is " + Quote(value) + ", not 1 to 4.";
-        return problem;
+        return "space dimension is " + Quote(value) + ", not 1 to 4.";
       }
       axesInForce = static_cast<int>(d);
     }
@@ -145,25 +136,22 @@ std::string ReadNrrdFields(const std::string& headerPath, NrrdFields* header)
     {
       if (declaredDimension == 0)
       {
-        problem = "'" + name + "' comes before 'dimension', which gives its length.";
-        return problem;
+        return "'" + name + "' comes before 'dimension', which gives its length.";
       }
       // vtkNrrdReader sizes "sizes" and "spacings" by its axis count at that point, which a
       // "space" field before them sets to 3; "space directions" it takes as written.
       if (name != "space directions" && declaredDimension != axesInForce)
       {
-        problem = "'" + name + "' follows a 'space' field that makes VTK's NRRD reader take " +
+        return "'" + name + "' follows a 'space' field that makes VTK's NRRD reader take " +
           std::to_string(axesInForce) + " axes, but dimension is " +
           std::to_string(declaredDimension) + ": it would drop or invent axes (write " + name +
           " before the space field).";
-        return problem;
       }
       const std::vector<std::string> words = Split(value);
       if (static_cast<int>(words.size()) != declaredDimension)
       {
-        problem = "'" + name + "' " + Quote(value) + " has " + std::to_string(words.size()) +
+        return "'" + name + "' " + Quote(value) + " has " + std::to_string(words.size()) +
           " entries but dimension is " + std::to_string(declaredDimension) + ".";
-        return problem;
       }
       if (name == "sizes")
       {
@@ -172,8 +160,7 @@ std::string ReadNrrdFields(const std::string& headerPath, NrrdFields* header)
           long long size = 0;
           if (!ParseInteger(word, &size) || size < 1 || size > INT_MAX)
           {
-            problem = "sizes " + Quote(value) + " is not a list of positive sizes.";
-            return problem;
+            return "sizes " + Quote(value) + " is not a list of positive sizes.";
           }
           sizes.push_back(size);
         }
@@ -181,8 +168,7 @@ std::string ReadNrrdFields(const std::string& headerPath, NrrdFields* header)
       }
       if (!spacing.empty())
       {
-        problem = "the header has both 'spacings' and 'space directions'.";
-        return problem;
+        return "the header has both 'spacings' and 'space directions'.";
       }
       for (const std::string& word : words)
       {
@@ -195,8 +181,7 @@ std::string ReadNrrdFields(const std::string& headerPath, NrrdFields* header)
           }
           else if (!ParseReal(word, &s))
           {
-            problem = "spacings " + Quote(value) + " holds " + Quote(word) + ", not a number.";
-            return problem;
+            return "spacings " + Quote(value) + " holds " + Quote(word) + ", not a number.";
           }
           spacing.push_back(s);
           continue;
@@ -210,9 +195,8 @@ std::string ReadNrrdFields(const std::string& headerPath, NrrdFields* header)
         }
         if (word.size() < 2 || word.front() != '(' || word.back() != ')')
         {
-          problem = "space directions entry " + Quote(word) +
+          return "space directions entry " + Quote(word) +
             " is not a vector like (1,0,0) (no spaces inside the parentheses).";
-          return problem;
         }
         double sumOfSquares = 0;
         std::stringstream parts(word.substr(1, word.size() - 2));
@@ -223,17 +207,15 @@ std::string ReadNrrdFields(const std::string& headerPath, NrrdFields* header)
           double c = 0;
           if (!ParseReal(part, &c) || !std::isfinite(c))
           {
-            problem = "space directions entry " + Quote(word) + " holds " + Quote(part) +
+            return "space directions entry " + Quote(word) + " holds " + Quote(part) +
               ", not a finite number.";
-            return problem;
           }
           sumOfSquares += c * c;
           ++components;
         }
         if (components == 0)
         {
-          problem = "space directions entry " + Quote(word) + " is empty.";
-          return problem;
+          return "space directions entry " + Quote(word) + " is empty.";
         }
         spacing.push_back(std::sqrt(sumOfSquares));
       }
@@ -243,8 +225,7 @@ std::string ReadNrrdFields(const std::string& headerPath, NrrdFields* header)
       // vtkNrrdReader reads "(x,y,z)" and keeps up to three numbers.
       if (value.size() < 2 || value.front() != '(' || value.back() != ')')
       {
-        problem = "space origin " + Quote(value) + " is not a vector like (0,0,0).";
-        return problem;
+        return "space origin " + Quote(value) + " is not a vector like (0,0,0).";
       }
       std::stringstream parts(value.substr(1, value.size() - 2));
       std::string part;
@@ -254,8 +235,7 @@ std::string ReadNrrdFields(const std::string& headerPath, NrrdFields* header)
         double c = 0;
         if (!ParseReal(Trim(part), &c))
         {
-          problem = "space origin " + Quote(value) + " holds " + Quote(part) + ", not a number.";
-          return problem;
+          return "space origin " + Quote(value) + " holds " + Quote(part) + ", not a number.";
         }
         if (i < 3)
         {
@@ -265,7 +245,7 @@ std::string ReadNrrdFields(const std::string& headerPath, NrrdFields* header)
       }
     }
   }
-  return problem;
+  return {};
 }
 }
 }
