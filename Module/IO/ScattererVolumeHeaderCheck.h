@@ -16,6 +16,12 @@
 // Plain C++17 with no VTK and no zlib (a small inflater is built in), so the
 // checks can be fuzzed cheaply (Testing/Fuzz, docs/fuzzing.md). Every problem
 // is one sentence without the header's path: the caller names the file.
+//
+// One source per format: ScattererMetaImageHeaderCheck.cxx,
+// ScattererNrrdHeaderCheck.cxx (its header parsed by ScattererNrrdHeaderFields.cxx)
+// and ScattererNiftiHeaderCheck.cxx. What they share: CheckLayout and the helpers of
+// ScattererHeaderCheckCommon.h (ScattererVolumeHeaderCheck.cxx), the voxel data checks
+// (ScattererVoxelDataCheck.h) and the inflater (ScattererInflate.h).
 #ifndef ScattererVolumeHeaderCheck_h
 #define ScattererVolumeHeaderCheck_h
 

@@ -1,8 +1,6 @@
 #include "vtkScattererVolumeReader.h"
 
-#include "vtkCallbackCommand.h"
 #include "vtkDataArray.h"
-#include "vtkExecutive.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -20,139 +18,34 @@
 #include "vtksys/SystemTools.hxx"
 
 #include "ScattererDicomSeries.h"
+#include "ScattererHeaderCheckCommon.h"
+#include "ScattererReaderErrors.h"
 #include "ScattererVolumeHeaderCheck.h"
 #include "ScattererVolumeOrientation.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <exception>
-#include <iostream>
 #include <new>
 #include <sstream>
-#include <vector>
 
 vtkStandardNewMacro(vtkScattererVolumeReader);
 
 namespace
 {
-std::string LowerCase(std::string s)
-{
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
-  return s;
-}
-
 bool EndsWith(const std::string& s, const std::string& suffix)
 {
   return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
-// Collects the errors a delegate reader reports instead of letting them print, as one
-// line: what the reader said, without VTK's source location and object address.
-struct ErrorSink
+// A VTK file reader of type Reader, set to read path.
+template <typename Reader>
+vtkSmartPointer<vtkAlgorithm> NewFileReader(const std::string& path)
 {
-  std::vector<std::string> Messages;
-  bool ExecutiveFailed = false;
-  vtkNew<vtkCallbackCommand> Command;
-  ErrorSink()
-  {
-    this->Command->SetClientData(this);
-    this->Command->SetCallback([](vtkObject*, unsigned long, void* client, void* call) {
-      static_cast<ErrorSink*>(client)->Add(call ? static_cast<const char*>(call) : "");
-    });
-  }
-  void Add(std::string text)
-  {
-    // VTK's messages read "ERROR: In <file>, line N\n<vtkClass> (0x..): <text>\n\n".
-    if (text.compare(0, 10, "ERROR: In ") == 0 && text.find('\n') != std::string::npos)
-    {
-      text = text.substr(text.find('\n') + 1);
-    }
-    const auto prefix = text.find("): ");
-    if (prefix != std::string::npos && prefix < text.find('\n') && text.find(" (0x") < prefix)
-    {
-      text = text.substr(prefix + 3);
-    }
-    // The executive's "Algorithm ... returned failure for request: <vtkInformation dump>"
-    // only repeats that the reader failed; its dump runs over many lines.
-    if (text.find("returned failure for request") != std::string::npos)
-    {
-      this->ExecutiveFailed = true;
-      return;
-    }
-    text = text.substr(0, text.find('\n'));
-    while (!text.empty() && (text.back() == ' ' || text.back() == '\r' || text.back() == '.'))
-    {
-      text.pop_back();
-    }
-    if (text.empty())
-    {
-      text = "unknown error";
-    }
-    if (std::find(this->Messages.begin(), this->Messages.end(), text) == this->Messages.end())
-    {
-      this->Messages.push_back(text);
-    }
-  }
-  bool Failed() const { return this->ExecutiveFailed || !this->Messages.empty(); }
-  std::string Text() const
-  {
-    if (this->Messages.empty())
-    {
-      return "VTK's reader failed without saying why";
-    }
-    std::string joined;
-    for (const std::string& message : this->Messages)
-    {
-      joined += (joined.empty() ? "" : "; ") + message;
-    }
-    return joined;
-  }
-  void Watch(vtkAlgorithm* algorithm)
-  {
-    algorithm->AddObserver(vtkCommand::ErrorEvent, this->Command);
-    algorithm->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, this->Command);
-  }
-};
-
-// MetaIO (inside vtkMetaImageReader) reports read errors such as "Uncompress failed" or
-// "data not read completely" only on std::cerr, and goes on with a partly filled volume.
-// While a MetaImage is read, std::cerr is redirected here so that such a report fails the
-// read. (std::cerr is process-wide: output of other threads in that moment lands here too.)
-class CerrCapture
-{
-public:
-  CerrCapture()
-    : Previous(std::cerr.rdbuf(this->Buffer.rdbuf()))
-  {
-  }
-  ~CerrCapture() { std::cerr.rdbuf(this->Previous); }
-  CerrCapture(const CerrCapture&) = delete;
-  CerrCapture& operator=(const CerrCapture&) = delete;
-
-  // The reports, one line; MetaIO's deprecation notes are not errors.
-  std::string Errors() const
-  {
-    std::istringstream lines(this->Buffer.str());
-    std::string line;
-    std::string errors;
-    while (std::getline(lines, line))
-    {
-      const auto b = line.find_first_not_of(" \t\r");
-      if (b == std::string::npos || line.find("deprecated") != std::string::npos)
-      {
-        continue;
-      }
-      line = line.substr(b, line.find_last_not_of(" \t\r") - b + 1);
-      errors += (errors.empty() ? "" : " ") + line;
-    }
-    return errors;
-  }
-
-private:
-  std::ostringstream Buffer;
-  std::streambuf* Previous;
-};
+  auto reader = vtkSmartPointer<Reader>::New();
+  reader->SetFileName(path.c_str());
+  return reader;
+}
 
 std::string Describe(const scatterer_io::VolumeLayout& layout)
 {
@@ -298,13 +191,13 @@ bool vtkScattererVolumeReader::ReadChecked()
     return false;
   }
 
-  const std::string lower = LowerCase(path);
+  const std::string lower = scatterer_io::header_check::Lower(path);
   vtkSmartPointer<vtkAlgorithm> reader;
   // Formats with a header are validated before VTK's reader sees them (VTK 9.1's readers
   // crash on or misread bad headers; ScattererVolumeHeaderCheck.h).
   bool checked = false;
   scatterer_io::HeaderCheck header;
-  ErrorSink sink;
+  scatterer_io::ReaderErrorSink sink;
   std::string dicomProblem;
   if (vtksys::SystemTools::FileIsDirectory(path) || EndsWith(lower, ".dcm") ||
     EndsWith(lower, ".dicom"))
@@ -320,34 +213,26 @@ bool vtkScattererVolumeReader::ReadChecked()
     this->FormatName = "MetaImage";
     header = scatterer_io::CheckMetaImageHeader(path);
     checked = true;
-    auto meta = vtkSmartPointer<vtkMetaImageReader>::New();
-    meta->SetFileName(path.c_str());
-    reader = meta;
+    reader = NewFileReader<vtkMetaImageReader>(path);
   }
   else if (EndsWith(lower, ".nii") || EndsWith(lower, ".nii.gz"))
   {
     this->FormatName = "NIfTI";
     header = scatterer_io::CheckNiftiHeader(path);
     checked = true;
-    auto nifti = vtkSmartPointer<vtkNIFTIImageReader>::New();
-    nifti->SetFileName(path.c_str());
-    reader = nifti;
+    reader = NewFileReader<vtkNIFTIImageReader>(path);
   }
   else if (EndsWith(lower, ".vti"))
   {
     this->FormatName = "VTK XML image";
-    auto xml = vtkSmartPointer<vtkXMLImageDataReader>::New();
-    xml->SetFileName(path.c_str());
-    reader = xml;
+    reader = NewFileReader<vtkXMLImageDataReader>(path);
   }
   else if (EndsWith(lower, ".nrrd") || EndsWith(lower, ".nhdr"))
   {
     this->FormatName = "NRRD";
     header = scatterer_io::CheckNrrdHeader(path);
     checked = true;
-    auto nrrd = vtkSmartPointer<vtkNrrdReader>::New();
-    nrrd->SetFileName(path.c_str());
-    reader = nrrd;
+    reader = NewFileReader<vtkNrrdReader>(path);
   }
   else
   {
@@ -369,7 +254,7 @@ bool vtkScattererVolumeReader::ReadChecked()
   std::string ioErrors;
   if (this->FormatName == "MetaImage")
   {
-    CerrCapture capture;
+    scatterer_io::CerrCapture capture;
     reader->Update();
     ioErrors = capture.Errors();
   }

@@ -1,21 +1,14 @@
 #include "vtkScattererTemplateSource.h"
 
-#include "vtkCellArray.h"
-#include "vtkFieldData.h"
-#include "vtkFloatArray.h"
-#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
-#include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
-#include "vtkPointData.h"
-#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkScattererMaterial.h"
-#include "vtkStringArray.h"
 
 #include "ScattererMaterialConversion.h"
+#include "ScattererTemplatePoints.h"
 
 #include <scatterer/Template.h>
 #include <scatterer/TemplateIO.h>
@@ -304,60 +297,7 @@ int vtkScattererTemplateSource::RequestData(
   }
   const scatterer::TemplateSet& set = this->Internals->Set;
 
-  const vtkIdType count = this->GetNumberOfPhotons();
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToFloat();
-  points->SetNumberOfPoints(count);
-  vtkNew<vtkFloatArray> intensity;
-  intensity->SetName("Intensity");
-  intensity->SetNumberOfTuples(count);
-  vtkNew<vtkIntArray> templateId;
-  templateId->SetName("TemplateId");
-  templateId->SetNumberOfTuples(count);
-  vtkNew<vtkIntArray> materialId;
-  materialId->SetName("MaterialId");
-  materialId->SetNumberOfTuples(count);
-  vtkNew<vtkIdTypeArray> offsets;
-  offsets->SetNumberOfTuples(count + 1);
-  vtkNew<vtkIdTypeArray> connectivity;
-  connectivity->SetNumberOfTuples(count);
-  vtkNew<vtkStringArray> names;
-  names->SetName("MaterialName");
-  names->SetNumberOfValues(static_cast<vtkIdType>(set.materials.size()));
-
-  const double radius = this->TemplateRadius;
-  vtkIdType id = 0;
-  for (std::size_t m = 0; m < set.materials.size(); ++m)
-  {
-    names->SetValue(static_cast<vtkIdType>(m), set.materials[m].material.name);
-    const auto& templates = set.materials[m].templates;
-    for (std::size_t t = 0; t < templates.size(); ++t)
-    {
-      for (const scatterer::Photon& photon : templates[t].photons)
-      {
-        const float p[3] = { static_cast<float>(photon.position.x * radius),
-          static_cast<float>(photon.position.y * radius),
-          static_cast<float>(photon.position.z * radius) };
-        points->SetPoint(id, p);
-        intensity->SetValue(id, photon.intensity);
-        templateId->SetValue(id, static_cast<int>(t));
-        materialId->SetValue(id, static_cast<int>(m));
-        offsets->SetValue(id, id);
-        connectivity->SetValue(id, id);
-        ++id;
-      }
-    }
-  }
-  offsets->SetValue(count, count);
-
-  vtkNew<vtkCellArray> verts;
-  verts->SetData(offsets, connectivity);
-  output->SetPoints(points);
-  output->SetVerts(verts);
-  output->GetPointData()->SetScalars(intensity);
-  output->GetPointData()->AddArray(templateId);
-  output->GetPointData()->AddArray(materialId);
-  output->GetFieldData()->AddArray(names);
+  scatterer_vtk::TemplatePhotonsToPolyData(set, this->TemplateRadius, output);
   return 1;
 }
 
@@ -463,15 +403,7 @@ vtkIdType vtkScattererTemplateSource::GetNumberOfPhotons() const
   {
     return 0;
   }
-  vtkIdType n = 0;
-  for (const auto& entry : this->Internals->Set.materials)
-  {
-    for (const auto& t : entry.templates)
-    {
-      n += static_cast<vtkIdType>(t.photons.size());
-    }
-  }
-  return n;
+  return scatterer_vtk::CountPhotons(this->Internals->Set);
 }
 
 double vtkScattererTemplateSource::GetMaxLedgerResidual() const

@@ -7,6 +7,7 @@
 // volume_headers/: small MetaImage, NRRD and NIfTI files in the layouts of
 //   VolumeHeaderInput.h (each valid kind, plus the bad headers of issue 13).
 #include "GeneratorInput.h"
+#include "ScattererVolumeBytes.h"
 #include "VolumeHeaderInput.h"
 
 #include <scatterer/Template.h>
@@ -154,87 +155,30 @@ Material material(const char* name, double opacity, double n)
 }
 
 // 16-bit little-endian voxels n * 37 - 400, so that no two neighbours are equal.
+int seedValue(int n)
+{
+  return n * 37 - 400;
+}
+
 std::string shorts(int count)
 {
-  std::string bytes;
-  for (int n = 0; n < count; ++n) {
-    const auto v = static_cast<std::uint16_t>(n * 37 - 400);
-    bytes += static_cast<char>(v & 0xff);
-    bytes += static_cast<char>(v >> 8);
-  }
-  return bytes;
+  return scatterer_testing::ShortBytes(count, seedValue);
 }
 
 std::string asciiShorts(int count)
 {
-  std::string text;
-  for (int n = 0; n < count; ++n) {
-    text += std::to_string(n * 37 - 400) + (n % 10 == 9 ? "\n" : " ");
-  }
-  return text + "\n";
+  return scatterer_testing::AsciiValues(count, 10, seedValue) + "\n";
 }
 
-// A zlib stream of one stored deflate block.
-std::string zlibStored(const std::string& data)
-{
-  std::string out("\x78\x01", 2);
-  const auto len = static_cast<std::uint16_t>(data.size());
-  const auto nlen = static_cast<std::uint16_t>(~len);
-  out += '\x01';
-  out += static_cast<char>(len & 0xff);
-  out += static_cast<char>(len >> 8);
-  out += static_cast<char>(nlen & 0xff);
-  out += static_cast<char>(nlen >> 8);
-  out += data;
-  std::uint32_t a = 1, b = 0;
-  for (unsigned char c : data) {
-    a = (a + c) % 65521u;
-    b = (b + a) % 65521u;
-  }
-  const std::uint32_t adler = (b << 16) | a;
-  for (int i = 3; i >= 0; --i) {
-    out += static_cast<char>((adler >> (8 * i)) & 0xff);
-  }
-  return out;
-}
-
-// A little-endian NIfTI header for a 4x3x2 volume of the given type, data at vox_offset.
+// A little-endian NIfTI-1 header for a 4x3x2 volume of the given type, data at vox_offset.
 std::string nifti1(std::int16_t datatype, std::int16_t bitpix)
 {
-  std::string h(352, '\0');
-  auto put = [&](int offset, const void* v, std::size_t n) { std::memcpy(&h[offset], v, n); };
-  const std::int32_t sizeofHdr = 348;
-  const std::int16_t dim[8] = { 3, 4, 3, 2, 1, 1, 1, 1 };
-  const float pixdim[8] = { 1.0f, 0.8f, 0.8f, 2.5f, 0, 0, 0, 0 };
-  const float voxOffset = 352.0f, slope = 1.0f;
-  put(0, &sizeofHdr, 4);
-  put(40, dim, sizeof dim);
-  put(70, &datatype, 2);
-  put(72, &bitpix, 2);
-  put(76, pixdim, sizeof pixdim);
-  put(108, &voxOffset, 4);
-  put(112, &slope, 4);
-  put(344, "n+1", 4);
-  return h;
-}
-
-std::string nifti2()
-{
-  std::string h(544, '\0');
-  auto put = [&](int offset, const void* v, std::size_t n) { std::memcpy(&h[offset], v, n); };
-  const std::int32_t sizeofHdr = 540;
-  const std::int16_t datatype = 4, bitpix = 16;
-  const std::int64_t dim[8] = { 3, 4, 3, 2, 1, 1, 1, 1 };
-  const double pixdim[8] = { 1.0, 0.8, 0.8, 2.5, 0, 0, 0, 0 };
-  const std::int64_t voxOffset = 544;
-  put(0, &sizeofHdr, 4);
-  put(4, "n+2\0\r\n\032\n", 8);
-  put(12, &datatype, 2);
-  put(14, &bitpix, 2);
-  put(16, dim, sizeof dim);
-  put(104, pixdim, sizeof pixdim);
-  put(168, &voxOffset, 8);
-  return h;
+  scatterer_testing::Nifti1Fields fields;
+  fields.Dim = { 4, 3, 2 };
+  fields.Datatype = datatype;
+  fields.Bitpix = bitpix;
+  fields.Pixdim = { 0.8f, 0.8f, 2.5f };
+  return scatterer_testing::Nifti1Header(fields);
 }
 
 void writeVolumeSeed(const std::string& path, fuzz::VolumeFormat format, const std::string& header,
@@ -247,30 +191,37 @@ void writeVolumeSeed(const std::string& path, fuzz::VolumeFormat format, const s
 void writeVolumeSeeds(const std::string& dir)
 {
   using namespace fuzz;
-  const std::string meta = "ObjectType = Image\nNDims = 3\nDimSize = 4 3 2\nElementType = MET_SHORT\n"
-                           "ElementSpacing = 0.5 0.5 1.5\nOffset = -10 5 0\n";
-  writeVolumeSeed(dir + "mha-local", kMetaImageLocal, meta + "ElementDataFile = LOCAL\n" + shorts(24));
+  // A 4x3x2 MET_SHORT header with a spacing and an origin; extra fields go before the
+  // ElementDataFile that ends it.
+  auto meta = [](const std::string& extra, const std::string& dataFile) {
+    return scatterer_testing::MetaImageHeader(
+      "4 3 2", "ElementSpacing = 0.5 0.5 1.5\nOffset = -10 5 0\n" + extra, dataFile);
+  };
+  writeVolumeSeed(dir + "mha-local", kMetaImageLocal, meta("", "LOCAL") + shorts(24));
   writeVolumeSeed(dir + "mhd-float-2-channels", kMetaImageDetached,
     "NDims = 3\nDimSize = 3 2 2\nElementType = MET_FLOAT\nElementNumberOfChannels = 2\n"
     "ElementDataFile = data.raw\n",
     shorts(48));
   writeVolumeSeed(dir + "mha-zlib", kMetaImageLocal,
-    meta + "CompressedData = True\nCompressedDataSize = 59\nElementDataFile = LOCAL\n" +
-      zlibStored(shorts(24)));
+    meta("CompressedData = True\nCompressedDataSize = 59\n", "LOCAL") +
+      scatterer_testing::ZlibStored(shorts(24)));
   writeVolumeSeed(dir + "mha-ascii", kMetaImageLocal,
-    meta + "BinaryData = False\nElementDataFile = LOCAL\n" + asciiShorts(24));
+    meta("BinaryData = False\n", "LOCAL") + asciiShorts(24));
   writeVolumeSeed(dir + "mhd-header-size-minus-1", kMetaImageDetached,
-    meta + "HeaderSize = -1\nElementDataFile = data.raw\n", "0123456789abcdef" + shorts(24));
+    meta("HeaderSize = -1\n", "data.raw"), "0123456789abcdef" + shorts(24));
   writeVolumeSeed(dir + "issue-mha-negative-channels", kMetaImageLocal,
-    meta + "ElementNumberOfChannels = -3\nElementDataFile = LOCAL\n" + shorts(24));
+    meta("ElementNumberOfChannels = -3\n", "LOCAL") + shorts(24));
   writeVolumeSeed(dir + "issue-mha-compressed-raw", kMetaImageLocal,
-    meta + "CompressedData = True\nElementDataFile = LOCAL\n" + shorts(24));
+    meta("CompressedData = True\n", "LOCAL") + shorts(24));
 
-  const std::string nrrd = "NRRD0004\n# seed\ntype: short\ndimension: 3\nspace: left-posterior-superior\n"
+  const std::string nrrd = "type: short\ndimension: 3\nspace: left-posterior-superior\n"
                            "sizes: 10 2 2\nspace directions: (0.5,0,0) (0,0.5,0) (0,0,2)\n"
                            "space origin: (-5,0,3)\nendian: little\n";
-  writeVolumeSeed(dir + "nrrd-raw", kNrrdAttached, nrrd + "encoding: raw\n\n" + shorts(40));
-  writeVolumeSeed(dir + "nrrd-gzip", kNrrdAttached, nrrd + "encoding: gzip\n\n" + gzipStored(shorts(40)));
+  writeVolumeSeed(dir + "nrrd-raw", kNrrdAttached,
+    scatterer_testing::NrrdHeader("seed", nrrd + "encoding: raw\n") + shorts(40));
+  writeVolumeSeed(dir + "nrrd-gzip", kNrrdAttached,
+    scatterer_testing::NrrdHeader("seed", nrrd + "encoding: gzip\n") +
+      scatterer_testing::GzipStored(shorts(40)));
   writeVolumeSeed(dir + "nrrd-rgb", kNrrdAttached,
     "NRRD0005\ntype: uchar\ndimension: 4\nsizes: 3 10 2 2\nkinds: RGB-color domain domain domain\n"
     "spacings: nan 1 1 1\nencoding: raw\n\n" + std::string(120, '\x7f'));
@@ -286,9 +237,10 @@ void writeVolumeSeeds(const std::string& dir)
 
   writeVolumeSeed(dir + "nii", kNifti, nifti1(4, 16) + shorts(24));
   writeVolumeSeed(dir + "nii-rgb", kNifti, nifti1(128, 24) + std::string(72, '\x40'));
-  writeVolumeSeed(dir + "nii2", kNifti, nifti2() + shorts(24));
+  writeVolumeSeed(dir + "nii2", kNifti,
+    scatterer_testing::Nifti2Header({ 4, 3, 2 }, { 0.8, 0.8, 2.5 }) + shorts(24));
   writeVolumeSeed(dir + "nii-gz", kNiftiGzipped, nifti1(16, 32) + shorts(48));
-  writeVolumeSeed(dir + "nii-gz-raw", kNiftiGzipRaw, gzipStored(nifti1(4, 16) + shorts(24)));
+  writeVolumeSeed(dir + "nii-gz-raw", kNiftiGzipRaw, scatterer_testing::GzipStored(nifti1(4, 16) + shorts(24)));
   writeVolumeSeed(dir + "issue-nii-datatype-999", kNifti, nifti1(999, 16) + shorts(24));
 }
 

@@ -12,6 +12,8 @@
 //   is there), then L bytes of header, then the content of data.raw.
 #pragma once
 
+#include "ScattererVolumeBytes.h" // Testing/Unit: GzipStored
+
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -37,43 +39,6 @@ struct VolumeFiles {
   std::string data;       // data.raw, when detached
 };
 
-inline std::uint32_t crc32(const std::string& data)
-{
-  std::uint32_t crc = 0xffffffffu;
-  for (unsigned char c : data) {
-    crc ^= c;
-    for (int k = 0; k < 8; ++k) {
-      crc = (crc & 1) ? 0xEDB88320u ^ (crc >> 1) : crc >> 1;
-    }
-  }
-  return crc ^ 0xffffffffu;
-}
-
-// A valid gzip member of stored deflate blocks (no zlib needed).
-inline std::string gzipStored(const std::string& data)
-{
-  std::string out("\x1f\x8b\x08\0\0\0\0\0\0\x03", 10);
-  std::size_t pos = 0;
-  do {
-    const std::size_t n = data.size() - pos < 65535 ? data.size() - pos : 65535;
-    out += static_cast<char>(pos + n == data.size() ? 1 : 0);
-    const auto len = static_cast<std::uint16_t>(n);
-    const auto nlen = static_cast<std::uint16_t>(~len);
-    out += static_cast<char>(len & 0xff);
-    out += static_cast<char>(len >> 8);
-    out += static_cast<char>(nlen & 0xff);
-    out += static_cast<char>(nlen >> 8);
-    out += data.substr(pos, n);
-    pos += n;
-  } while (pos < data.size());
-  for (const std::uint32_t v : { crc32(data), static_cast<std::uint32_t>(data.size()) }) {
-    for (int i = 0; i < 4; ++i) {
-      out += static_cast<char>((v >> (8 * i)) & 0xff);
-    }
-  }
-  return out;
-}
-
 inline VolumeFiles decodeVolumeInput(const std::uint8_t* bytes, std::size_t size)
 {
   VolumeFiles files;
@@ -94,7 +59,7 @@ inline VolumeFiles decodeVolumeInput(const std::uint8_t* bytes, std::size_t size
     files.header = body.substr(0, length < body.size() ? length : body.size());
     files.data = body.substr(files.header.size());
   } else if (files.format == kNiftiGzipped) {
-    files.header = gzipStored(rest);
+    files.header = scatterer_testing::GzipStored(rest);
   } else {
     files.header = rest;
   }

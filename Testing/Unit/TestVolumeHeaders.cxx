@@ -5,6 +5,8 @@
 // valid variants correctly.
 #include "vtkScattererVolumeReader.h"
 
+#include "ScattererVolumeBytes.h"
+
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkMetaImageWriter.h"
@@ -16,7 +18,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -38,35 +39,22 @@ int16_t Value(int n)
 
 std::string RawShorts(int count = Voxels)
 {
-  std::string bytes;
-  for (int n = 0; n < count; ++n)
-  {
-    const auto v = static_cast<uint16_t>(Value(n));
-    bytes += static_cast<char>(v & 0xff);
-    bytes += static_cast<char>(v >> 8);
-  }
-  return bytes;
+  return scatterer_testing::ShortBytes(count, Value);
 }
 
 std::string AsciiShorts(int count = Voxels)
 {
-  std::string text;
-  for (int n = 0; n < count; ++n)
-  {
-    text += std::to_string(Value(n)) + (n % NX == NX - 1 ? "\n" : " ");
-  }
-  return text;
+  return scatterer_testing::AsciiValues(count, NX, Value);
 }
 
 std::string MetaHeader(const std::string& extra, const std::string& dataFile = "v.raw")
 {
-  return "ObjectType = Image\nNDims = 3\nDimSize = 11 5 3\nElementType = MET_SHORT\n" + extra +
-    "ElementDataFile = " + dataFile + "\n";
+  return scatterer_testing::MetaImageHeader("11 5 3", extra, dataFile);
 }
 
 std::string NrrdHeader(const std::string& fields)
 {
-  return "NRRD0004\n# built by TestVolumeHeaders\n" + fields + "\n";
+  return scatterer_testing::NrrdHeader("built by TestVolumeHeaders", fields);
 }
 
 const std::string NrrdShort3D = "type: short\ndimension: 3\nsizes: 11 5 3\n";
@@ -75,68 +63,20 @@ const std::string NrrdShort3D = "type: short\ndimension: 3\nsizes: 11 5 3\n";
 std::string NiftiHeader(int16_t datatype = 4, int16_t bitpix = 16,
   std::array<float, 3> pixdim = { 1.0f, 1.0f, 1.0f }, const char* magic = "n+1")
 {
-  std::string h(352, '\0');
-  auto put = [&](int offset, const void* value, std::size_t size) {
-    std::memcpy(&h[static_cast<std::size_t>(offset)], value, size);
-  };
-  const int32_t sizeofHdr = 348;
-  const int16_t dim[8] = { 3, NX, NY, NZ, 1, 1, 1, 1 };
-  const float pix[8] = { 1.0f, pixdim[0], pixdim[1], pixdim[2], 0, 0, 0, 0 };
-  const float voxOffset = 352.0f;
-  const float slope = 1.0f;
-  put(0, &sizeofHdr, 4);
-  put(40, dim, sizeof dim);
-  put(70, &datatype, 2);
-  put(72, &bitpix, 2);
-  put(76, pix, sizeof pix);
-  put(108, &voxOffset, 4);
-  put(112, &slope, 4);
-  put(344, magic, 4);
-  return h;
-}
-
-uint32_t Crc32(const std::string& data)
-{
-  uint32_t crc = 0xffffffffu;
-  for (unsigned char c : data)
-  {
-    crc ^= c;
-    for (int k = 0; k < 8; ++k)
-    {
-      crc = (crc & 1) ? 0xEDB88320u ^ (crc >> 1) : crc >> 1;
-    }
-  }
-  return crc ^ 0xffffffffu;
+  scatterer_testing::Nifti1Fields fields;
+  fields.Dim = { NX, NY, NZ };
+  fields.Datatype = datatype;
+  fields.Bitpix = bitpix;
+  fields.Pixdim = pixdim;
+  fields.Magic = magic;
+  return scatterer_testing::Nifti1Header(fields);
 }
 
 // A valid gzip file of stored (uncompressed) deflate blocks: enough to build gzip data
 // without zlib, and its bytes are where the test expects them.
 std::string Gzip(const std::string& data)
 {
-  std::string out("\x1f\x8b\x08\0\0\0\0\0\0\x03", 10);
-  std::size_t pos = 0;
-  do
-  {
-    const std::size_t n = std::min<std::size_t>(65535, data.size() - pos);
-    const bool last = pos + n == data.size();
-    out += static_cast<char>(last ? 1 : 0);
-    const uint16_t len = static_cast<uint16_t>(n);
-    const uint16_t nlen = static_cast<uint16_t>(~len);
-    out += static_cast<char>(len & 0xff);
-    out += static_cast<char>(len >> 8);
-    out += static_cast<char>(nlen & 0xff);
-    out += static_cast<char>(nlen >> 8);
-    out += data.substr(pos, n);
-    pos += n;
-  } while (pos < data.size());
-  for (uint32_t v : { Crc32(data), static_cast<uint32_t>(data.size()) })
-  {
-    for (int i = 0; i < 4; ++i)
-    {
-      out += static_cast<char>((v >> (8 * i)) & 0xff);
-    }
-  }
-  return out;
+  return scatterer_testing::GzipStored(data);
 }
 
 class VolumeHeaderTest : public ::testing::Test
