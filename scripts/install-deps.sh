@@ -12,6 +12,7 @@ packages=(
   python3-vtk9                                    # VTK's Python (wrapping, Python tests/example)
   libgtest-dev libbenchmark-dev                   # GoogleTest, Google Benchmark
   clang libclang-rt-14-dev                        # libFuzzer + sanitizer runtimes (scripts/fuzz.sh)
+  clang-format-14                                 # each layer's .clang-format (scripts/format.sh)
   xvfb xauth libgl1-mesa-dri                      # headless X + Mesa llvmpipe
   invesalius-examples                             # the real CT head (see docs/data.md)
   mricron-data python3-imageio                    # real MRI (Colin27) and CT angiography (stent), docs/data.md

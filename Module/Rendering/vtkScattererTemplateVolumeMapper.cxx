@@ -151,7 +151,8 @@ void vtkScattererTemplateVolumeMapper::AddMaterialsFromLabelTransferFunctions(
       ctf->GetRange(range);
       ctf->GetColor(0.5 * (range[0] + range[1]), color);
     }
-    this->AddLabelMaterial(label, 1.33 + 0.12 * index++, color[0], color[1], color[2]);
+    this->AddLabelMaterial(
+      label, scatterer::defaultRefractiveIndex(index++), color[0], color[1], color[2]);
   }
 }
 

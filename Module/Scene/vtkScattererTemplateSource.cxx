@@ -109,50 +109,53 @@ vtkMTimeType vtkScattererTemplateSource::GetMTime()
 // ---------------------------------------------------------------------------
 // Settings with NaN checks
 
+namespace
+{
+// The rule the three fractional settings share: NaN is refused with an error naming the
+// setter and the range (the old value stays), anything else is clamped to [lo, 1].
+// Returns whether the member changed.
+bool SetClampedFraction(vtkObject* self, double value, double lo, double& member,
+  const char* setter, const char* what, const char* unit)
+{
+  if (std::isnan(value))
+  {
+    vtkErrorWithObjectMacro(self, << setter << ": the " << what << " must be a number in [" << lo
+                                  << ", 1]" << unit << ", got NaN; keeping " << member << ".");
+    return false;
+  }
+  value = std::min(std::max(value, lo), 1.0);
+  if (member == value)
+  {
+    return false;
+  }
+  member = value;
+  return true;
+}
+}
+
 void vtkScattererTemplateSource::SetThreshold(double threshold)
 {
-  if (std::isnan(threshold))
+  if (SetClampedFraction(this, threshold, kMinThreshold, this->Threshold, "SetThreshold",
+        "threshold", ""))
   {
-    vtkErrorMacro(<< "SetThreshold: the threshold must be a number in [" << kMinThreshold
-                  << ", 1], got NaN; keeping " << this->Threshold << ".");
-    return;
-  }
-  threshold = std::min(std::max(threshold, kMinThreshold), 1.0);
-  if (this->Threshold != threshold)
-  {
-    this->Threshold = threshold;
     this->Modified();
   }
 }
 
 void vtkScattererTemplateSource::SetStepLength(double step)
 {
-  if (std::isnan(step))
+  if (SetClampedFraction(this, step, kMinStep, this->StepLength, "SetStepLength", "step length",
+        " template radii"))
   {
-    vtkErrorMacro(<< "SetStepLength: the step length must be a number in [" << kMinStep
-                  << ", 1] template radii, got NaN; keeping " << this->StepLength << ".");
-    return;
-  }
-  step = std::min(std::max(step, kMinStep), 1.0);
-  if (this->StepLength != step)
-  {
-    this->StepLength = step;
     this->Modified();
   }
 }
 
 void vtkScattererTemplateSource::SetLatticeCell(double cell)
 {
-  if (std::isnan(cell))
+  if (SetClampedFraction(this, cell, kMinStep, this->LatticeCell, "SetLatticeCell",
+        "lattice cell", " template radii"))
   {
-    vtkErrorMacro(<< "SetLatticeCell: the lattice cell must be a number in [" << kMinStep
-                  << ", 1] template radii, got NaN; keeping " << this->LatticeCell << ".");
-    return;
-  }
-  cell = std::min(std::max(cell, kMinStep), 1.0);
-  if (this->LatticeCell != cell)
-  {
-    this->LatticeCell = cell;
     this->Modified();
   }
 }
