@@ -68,7 +68,8 @@ int main(int argc, char* argv[])
   // problem to fix whatever machine this runs on, and reading needs no display.
   const bool ctHead = options.Input.empty();
   const std::string input = ctHead ? scatterer_examples::CtHeadPath() : options.Input;
-  vtkSmartPointer<vtkImageData> image = scatterer_examples::ReadVolumeOrCtHead(options.Input, error);
+  vtkSmartPointer<vtkImageData> image =
+    scatterer_examples::ReadVolumeOrCtHead(options.Input, error);
   if (!image)
   {
     std::cerr << "scatterer-render: " << error << "\n";
@@ -133,7 +134,8 @@ int main(int argc, char* argv[])
   // not draw as asked (a texture it could not make, a shader that did not build)
   // is not the picture the options describe.
   scatterer_examples::VtkErrorCounter vtkErrors;
-  const auto failedFrame = [&]() {
+  const auto failedFrame = [&]()
+  {
     if (vtkErrors.Count() == 0)
     {
       return false;

@@ -123,7 +123,8 @@ struct QualityStep
 const QualityStep QualitySteps[] = {
   { "draft", 4, 8, 8 },
   { "low", 3, 16, 6 },
-  { "default", scatterer::illumination::TransportScale.Default, scatterer::illumination::PhotonCap.Default,
+  { "default", scatterer::illumination::TransportScale.Default,
+    scatterer::illumination::PhotonCap.Default,
     scatterer::illumination::IlluminationInterval.Default },
   { "high", 1, 48, 2 },
   { "best", 1, 96, 1 },
@@ -192,15 +193,16 @@ int ParseArgs(int argc, char* argv[], Options& o)
     "that cannot be read or is refused, no X display, a VTK error while rendering with\n"
     "--output, the PNG cannot be written, or a --test check failed; 2 a bad command line\n"
     "(usage error); 77 --test without the prepared CT head (CTest: skipped).\n");
-  const auto store = [](std::string& target) {
-    return [&target](const std::string& v) { target = v; };
-  };
+  const auto store = [](std::string& target)
+  { return [&target](const std::string& v) { target = v; }; };
   scatterer_examples::AddValueOption(app, "--input", "PATH",
     "volume (.mhd/.mha, .nii/.nii.gz, .vti, .nrrd/.nhdr, a DICOM folder\n"
     "or one file of a DICOM series); default the prepared CT head",
     store(o.Input));
-  scatterer_examples::AddValueOption(
-    app, "--size", "WxH", "window size, 16..8192 each (default 600x600)", [&o](const std::string& v) {
+  scatterer_examples::AddValueOption(app, "--size", "WxH",
+    "window size, 16..8192 each (default 600x600)",
+    [&o](const std::string& v)
+    {
       std::string why;
       if (!scatterer_examples::ParseSize(v, o.Width, o.Height, why))
       {
@@ -218,7 +220,8 @@ int ParseArgs(int argc, char* argv[], Options& o)
     "transfer-function preset to start with (p cycles them in the window);\n"
     "default: ct-head for CT in Hounsfield units, auto otherwise\n" +
       scatterer_examples::TransferPresetHelp(),
-    [&o](const std::string& v) {
+    [&o](const std::string& v)
+    {
       const auto& names = scatterer_examples::TransferPresetNames();
       if (std::find(names.begin(), names.end(), v) == names.end())
       {
@@ -227,7 +230,8 @@ int ParseArgs(int argc, char* argv[], Options& o)
         {
           known += " " + name;
         }
-        scatterer_examples::ThrowUsageError("--preset '" + v + "': no such preset (known:" + known + ")");
+        scatterer_examples::ThrowUsageError(
+          "--preset '" + v + "': no such preset (known:" + known + ")");
       }
       o.Preset = v;
     });
@@ -237,17 +241,19 @@ int ParseArgs(int argc, char* argv[], Options& o)
     "win), and fail unless the image is lit, illumination was on\n"
     "in every frame and drag frames cast at most half the rays of\n"
     "still frames (the level of detail)");
-  app.callback([&]() {
-    const std::string nothingToRecord =
-      "that run ends after the played events, so there is no session to record";
-    scatterer_examples::RejectTogether(record, output, nothingToRecord);
-    scatterer_examples::RejectTogether(record, test, nothingToRecord);
-    if (record->count() > 0 && play->count() > 0 && o.Record == o.PlayEvents)
+  app.callback(
+    [&]()
     {
-      scatterer_examples::ThrowConflict("--record", "--play-events",
-        "both name '" + o.Record + "'; the recording would overwrite the events being played");
-    }
-  });
+      const std::string nothingToRecord =
+        "that run ends after the played events, so there is no session to record";
+      scatterer_examples::RejectTogether(record, output, nothingToRecord);
+      scatterer_examples::RejectTogether(record, test, nothingToRecord);
+      if (record->count() > 0 && play->count() > 0 && o.Record == o.PlayEvents)
+      {
+        scatterer_examples::ThrowConflict("--record", "--play-events",
+          "both name '" + o.Record + "'; the recording would overwrite the events being played");
+      }
+    });
   const int parsed = scatterer_examples::ParseCommandLine(app, argc, argv);
   if (parsed == scatterer_examples::ContinueRun && o.Test)
   {
@@ -285,7 +291,7 @@ struct Viewer
   double LastFrameMs = 0.0;
   int Frames = 0;
   int InteractiveFrames = 0;
-  int UnlitFrames = 0; // frames rendered with illumination asked for but not active
+  int UnlitFrames = 0;    // frames rendered with illumination asked for but not active
   bool LogFrames = false; // --test: one line per frame on stdout
   std::string LastFeatures;
   std::string LastMessage; // what the last key did, when it says more than the status
@@ -326,7 +332,8 @@ struct Viewer
     vtkScattererTemplateVolumeMapper* m = this->Mapper;
     const bool lit = m->GetIlluminationEnabled();
     std::string effects;
-    auto add = [&](bool on, const char* name) {
+    auto add = [&](bool on, const char* name)
+    {
       if (on)
       {
         effects += effects.empty() ? name : std::string(" ") + name;
@@ -340,11 +347,11 @@ struct Viewer
       add((" " + used + " ").find(std::string(" ") + name + " ") != std::string::npos, name);
     }
     char text[512];
-    std::snprintf(text, sizeof(text), "%.0f ms %s  %s  quality %s\n%s\n%s",
-      this->LastFrameMs, this->Interactive ? "drag" : "still",
+    std::snprintf(text, sizeof(text), "%.0f ms %s  %s  quality %s\n%s\n%s", this->LastFrameMs,
+      this->Interactive ? "drag" : "still",
       !lit ? "illumination off"
-           : m->GetIlluminationMode() == vtkScattererTemplateVolumeMapper::PER_SAMPLE ? "per-sample"
-                                                                                      : "transport",
+        : m->GetIlluminationMode() == vtkScattererTemplateVolumeMapper::PER_SAMPLE ? "per-sample"
+                                                                                   : "transport",
       QualitySteps[this->Quality].Name, this->Transfer->Describe().c_str(),
       !this->LastMessage.empty() ? this->LastMessage.c_str()
         : effects.empty()        ? "no effect on   h: help"
@@ -359,7 +366,8 @@ struct Viewer
   {
     if (this->Mapper->GetIlluminationMode() == vtkScattererTemplateVolumeMapper::TRANSPORT)
     {
-      this->LastMessage = std::string(effect) + (on ? " on" : " off") + ": per-sample mode only (m)";
+      this->LastMessage =
+        std::string(effect) + (on ? " on" : " off") + ": per-sample mode only (m)";
     }
   }
 
@@ -408,7 +416,8 @@ struct Viewer
         m->SetIlluminationEnabled(!m->GetIlluminationEnabled());
         break;
       case 'm':
-        m->SetIlluminationMode(m->GetIlluminationMode() == vtkScattererTemplateVolumeMapper::TRANSPORT
+        m->SetIlluminationMode(
+          m->GetIlluminationMode() == vtkScattererTemplateVolumeMapper::TRANSPORT
             ? vtkScattererTemplateVolumeMapper::PER_SAMPLE
             : vtkScattererTemplateVolumeMapper::TRANSPORT);
         this->ApplyQuality();
@@ -562,9 +571,9 @@ void OnRenderStart(vtkObject*, unsigned long, void* clientData, void*)
 void OnRenderEnd(vtkObject*, unsigned long, void* clientData, void*)
 {
   auto* viewer = static_cast<Viewer*>(clientData);
-  viewer->LastFrameMs = std::chrono::duration<double, std::milli>(
-    std::chrono::steady_clock::now() - viewer->FrameStart)
-                          .count();
+  viewer->LastFrameMs =
+    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - viewer->FrameStart)
+      .count();
   ++viewer->Frames;
   if (viewer->Interactive)
   {
@@ -620,7 +629,8 @@ double LitFraction(const std::string& path)
   }
   reader->SetFileName(path.c_str());
   reader->Update();
-  auto* scalars = vtkUnsignedCharArray::SafeDownCast(reader->GetOutput()->GetPointData()->GetScalars());
+  auto* scalars =
+    vtkUnsignedCharArray::SafeDownCast(reader->GetOutput()->GetPointData()->GetScalars());
   if (!scalars || scalars->GetNumberOfValues() == 0)
   {
     return 0.0;
@@ -653,7 +663,8 @@ int main(int argc, char* argv[])
   }
 
   const bool ctHead = options.Input.empty();
-  vtkSmartPointer<vtkImageData> image = scatterer_examples::ReadVolumeOrCtHead(options.Input, error);
+  vtkSmartPointer<vtkImageData> image =
+    scatterer_examples::ReadVolumeOrCtHead(options.Input, error);
   if (!image)
   {
     std::cerr << "scatterer-viewer: " << error << "\n";
@@ -716,9 +727,9 @@ int main(int argc, char* argv[])
   // suggests (ct-head for CT in Hounsfield units, auto otherwise).
   scatterer_viewer::ViewerTransfer transfer(image, property);
   const std::string preset = !options.Preset.empty() ? options.Preset
-    : ctHead                                          ? "ct-head"
-                                                      : scatterer_examples::DefaultTransferPreset(
-                                        scatterer_examples::VolumeHistogram(image));
+    : ctHead
+    ? "ct-head"
+    : scatterer_examples::DefaultTransferPreset(scatterer_examples::VolumeHistogram(image));
   transfer.Select(preset, error);
 
   Viewer viewer;
@@ -812,9 +823,8 @@ int main(int argc, char* argv[])
   const double lit = LitFraction(options.Output);
   std::printf("scatterer-viewer: %s, %dx%d, %d frames (%d interactive, %d without illumination),"
               " last frame %.0f ms, shader: %s, lit %.1f%%\n",
-    options.Output.c_str(), options.Width, options.Height, viewer.Frames,
-    viewer.InteractiveFrames, viewer.UnlitFrames, viewer.LastFrameMs, viewer.LastFeatures.c_str(),
-    100.0 * lit);
+    options.Output.c_str(), options.Width, options.Height, viewer.Frames, viewer.InteractiveFrames,
+    viewer.UnlitFrames, viewer.LastFrameMs, viewer.LastFeatures.c_str(), 100.0 * lit);
   const double stillRays = Median(viewer.StillRays);
   const double dragRays = Median(viewer.InteractiveRays);
   std::printf("scatterer-viewer: median still frame %.0f ms, %.0f rays; median drag frame %.0f ms,"

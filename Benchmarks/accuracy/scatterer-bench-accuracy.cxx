@@ -203,10 +203,12 @@ void ExportScene(const scatterer_reference_vtk::VtkScene& scene, int width, int 
   std::ofstream f(json);
   f.precision(10);
   vtkVolumeProperty* p = scene.Property;
-  f << "{\"width\": " << width << ", \"height\": " << height << ", \"sample_distance\": " << scene.SampleDistance
-    << ", \"unit_distance\": " << p->GetScalarOpacityUnitDistance() << ", \"ambient\": " << p->GetAmbient()
-    << ", \"diffuse\": " << p->GetDiffuse() << ", \"specular\": " << p->GetSpecular()
-    << ", \"specular_power\": " << p->GetSpecularPower() << ",\n \"opacity\": [";
+  f << "{\"width\": " << width << ", \"height\": " << height
+    << ", \"sample_distance\": " << scene.SampleDistance
+    << ", \"unit_distance\": " << p->GetScalarOpacityUnitDistance()
+    << ", \"ambient\": " << p->GetAmbient() << ", \"diffuse\": " << p->GetDiffuse()
+    << ", \"specular\": " << p->GetSpecular() << ", \"specular_power\": " << p->GetSpecularPower()
+    << ",\n \"opacity\": [";
   vtkPiecewiseFunction* o = p->GetScalarOpacity();
   for (int i = 0; i < o->GetSize(); ++i)
   {
@@ -228,8 +230,8 @@ void ExportScene(const scatterer_reference_vtk::VtkScene& scene, int width, int 
   double* up = cam->GetViewUp();
   double* cr = cam->GetClippingRange();
   f << "],\n \"camera\": {\"position\": [" << pos[0] << ", " << pos[1] << ", " << pos[2]
-    << "], \"focal_point\": [" << fp[0] << ", " << fp[1] << ", " << fp[2] << "], \"view_up\": [" << up[0]
-    << ", " << up[1] << ", " << up[2] << "], \"view_angle\": " << cam->GetViewAngle()
+    << "], \"focal_point\": [" << fp[0] << ", " << fp[1] << ", " << fp[2] << "], \"view_up\": ["
+    << up[0] << ", " << up[1] << ", " << up[2] << "], \"view_angle\": " << cam->GetViewAngle()
     << ", \"clipping_range\": [" << cr[0] << ", " << cr[1] << "]},\n \"lights\": [";
   vtkLightCollection* lights = scene.Renderer->GetLights();
   lights->InitTraversal();
@@ -240,8 +242,8 @@ void ExportScene(const scatterer_reference_vtk::VtkScene& scene, int width, int 
     double* lf = l->GetFocalPoint();
     double* dc = l->GetDiffuseColor();
     f << (first ? "" : ", ") << "{\"positional\": " << (l->GetPositional() ? "true" : "false")
-      << ", \"position\": [" << lp[0] << ", " << lp[1] << ", " << lp[2] << "], \"focal_point\": [" << lf[0]
-      << ", " << lf[1] << ", " << lf[2] << "], \"intensity\": " << l->GetIntensity()
+      << ", \"position\": [" << lp[0] << ", " << lp[1] << ", " << lp[2] << "], \"focal_point\": ["
+      << lf[0] << ", " << lf[1] << ", " << lf[2] << "], \"intensity\": " << l->GetIntensity()
       << ", \"diffuse_color\": [" << dc[0] << ", " << dc[1] << ", " << dc[2] << "]}";
     first = false;
   }
@@ -362,7 +364,8 @@ void WritePlot(const std::vector<Row>& rows, const std::string& scene, const std
 int main(int argc, char* argv[])
 {
   int frames = 3, width = 256, height = 256, spp = 1024;
-  std::string out = "accuracy-benchmark", scenes = "ct-head,shell-plate", only, peerPython, peerScript;
+  std::string out = "accuracy-benchmark", scenes = "ct-head,shell-plate", only, peerPython,
+              peerScript;
   for (int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
@@ -386,7 +389,8 @@ int main(int argc, char* argv[])
     {
       std::cerr << "usage: scatterer-bench-accuracy [--size WxH] [--frames N] [--spp N] "
                    "[--scenes ct-head,shell-plate] [--configs a,b] [--out DIR]\n"
-                   "         [--peer-python 'PYTHONPATH=... /usr/bin/python3' --peer-script vtk92_scattering_peer.py]\n";
+                   "         [--peer-python 'PYTHONPATH=... /usr/bin/python3' --peer-script "
+                   "vtk92_scattering_peer.py]\n";
       return 2;
     }
   }
@@ -397,7 +401,8 @@ int main(int argc, char* argv[])
   }
   mkdir(out.c_str(), 0755);
   std::ofstream csv(out + "/accuracy.csv");
-  csv << "scene,config,mode,illumination,photon_cap,templates,transport_scale,interval,long_range,threshold,"
+  csv << "scene,config,mode,illumination,photon_cap,templates,transport_scale,interval,long_range,"
+         "threshold,"
          "sample_distance,frames,median_ms,rmse,psnr_db,ssim,exposure_scale,reference_spp,"
          "reference_rms_standard_error,pareto\n";
   std::vector<Row> rows;
@@ -419,8 +424,8 @@ int main(int argc, char* argv[])
     }
 
     // The reference, cached on disk.
-    const std::string refPath = out + "/reference-" + sceneName + "-" + std::to_string(width) + "x" +
-      std::to_string(height) + "-" + std::to_string(spp) + "spp.vti";
+    const std::string refPath = out + "/reference-" + sceneName + "-" + std::to_string(width) +
+      "x" + std::to_string(height) + "-" + std::to_string(spp) + "spp.vti";
     std::vector<float> ref;
     double refSe = 0.0;
     {
@@ -431,7 +436,8 @@ int main(int argc, char* argv[])
         reader->SetFileName(refPath.c_str());
         reader->Update();
         ref = scatterer_reference_vtk::ToFloatRgb(reader->GetOutput());
-        auto* se = vtkFloatArray::SafeDownCast(reader->GetOutput()->GetPointData()->GetArray("StandardError"));
+        auto* se = vtkFloatArray::SafeDownCast(
+          reader->GetOutput()->GetPointData()->GetArray("StandardError"));
         double s2 = 0.0;
         for (vtkIdType i = 0; se && i < se->GetNumberOfTuples(); ++i)
           s2 += se->GetValue(i) * se->GetValue(i);
@@ -440,11 +446,12 @@ int main(int argc, char* argv[])
       }
       else
       {
-        scatterer_reference::PathTracer tracer(
-          scatterer_reference_vtk::Convert(scene.Image, scene.Property, scene.Renderer, width, height));
+        scatterer_reference::PathTracer tracer(scatterer_reference_vtk::Convert(
+          scene.Image, scene.Property, scene.Renderer, width, height));
         scatterer_reference::RenderSettings rs;
         rs.samplesPerPixel = spp;
-        rs.progress = [&](double f) {
+        rs.progress = [&](double f)
+        {
           std::fprintf(stderr, "\r%s reference (%d spp): %5.1f%%", sceneName.c_str(), spp, 100 * f);
           if (f >= 1.0)
             std::fprintf(stderr, "\n");
@@ -453,7 +460,8 @@ int main(int argc, char* argv[])
         ref = r.rgb;
         refSe = r.rmsStandardError;
         scatterer_reference_vtk::WriteFloatImage(scatterer_reference_vtk::ToImageData(r), refPath);
-        std::printf("%s: reference %d spp in %.1f s, RMS standard error %.3g (mean luminance %.3g)\n",
+        std::printf(
+          "%s: reference %d spp in %.1f s, RMS standard error %.3g (mean luminance %.3g)\n",
           sceneName.c_str(), spp, r.seconds, r.rmsStandardError, r.meanLuminance);
       }
     }
@@ -504,7 +512,8 @@ int main(int argc, char* argv[])
       window->Render();
       window->WaitForCompletion();
       const double warmMs =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - warmStart).count();
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - warmStart)
+          .count();
       std::vector<double> ms;
       const int timed = warmMs > 8000.0 ? 1 : frames; // very slow settings: one timed frame
       for (int f = 0; f < timed; ++f)
@@ -512,7 +521,9 @@ int main(int argc, char* argv[])
         const auto start = std::chrono::steady_clock::now();
         window->Render();
         window->WaitForCompletion();
-        ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+        ms.push_back(
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+            .count());
       }
       vtkNew<vtkWindowToImageFilter> grab;
       grab->SetInput(window);
@@ -527,10 +538,14 @@ int main(int argc, char* argv[])
       scales[config.Name] = m.scale;
       std::ostringstream line;
       line << sceneName << ',' << config.Name << ',' << config.Mode << ','
-           << (st ? (config.PerSample ? "per-sample" : config.Interactive ? "transport-interactive" : "transport") : "-") << ',' << config.PhotonCap << ','
-           << config.Templates << ',' << config.TransportScale << ',' << config.Interval << ',' << config.LongRange
-           << ',' << config.Threshold << ',' << config.SampleDistance << ',' << ms.size() << ',' << row.Ms << ','
-           << m.rmse << ',' << m.psnr << ',' << m.ssim << ',' << m.scale << ',' << spp << ',' << refSe;
+           << (st ? (config.PerSample        ? "per-sample"
+                        : config.Interactive ? "transport-interactive"
+                                             : "transport")
+                  : "-")
+           << ',' << config.PhotonCap << ',' << config.Templates << ',' << config.TransportScale
+           << ',' << config.Interval << ',' << config.LongRange << ',' << config.Threshold << ','
+           << config.SampleDistance << ',' << ms.size() << ',' << row.Ms << ',' << m.rmse << ','
+           << m.psnr << ',' << m.ssim << ',' << m.scale << ',' << spp << ',' << refSe;
       csvLines.push_back(line.str());
       std::printf("%-12s %-32s %9.1f ms  RMSE %.4f  PSNR %6.2f dB  SSIM %.4f\n", sceneName.c_str(),
         config.Name.c_str(), row.Ms, m.rmse, m.psnr, m.ssim);
@@ -541,10 +556,12 @@ int main(int argc, char* argv[])
     // VTK 9.2's volumetric scattering (ParaView 5.11's VTK), in a child process.
     if (!peerPython.empty() && !peerScript.empty())
     {
-      const std::string vti = out + "/scene-" + sceneName + ".vti", json = out + "/scene-" + sceneName + ".json";
+      const std::string vti = out + "/scene-" + sceneName + ".vti",
+                        json = out + "/scene-" + sceneName + ".json";
       ExportScene(scene, width, height, vti, json);
-      const std::string cmd = peerPython + " '" + peerScript + "' --volume '" + vti + "' --scene '" + json +
-        "' --name " + sceneName + " --out '" + out + "' --frames " + std::to_string(frames);
+      const std::string cmd = peerPython + " '" + peerScript + "' --volume '" + vti +
+        "' --scene '" + json + "' --name " + sceneName + " --out '" + out + "' --frames " +
+        std::to_string(frames);
       std::fflush(stdout);
       if (std::system(cmd.c_str()) != 0)
         std::fprintf(stderr, "VTK 9.2 peer failed: %s\n", cmd.c_str());
@@ -571,12 +588,12 @@ int main(int argc, char* argv[])
         images[f[1]] = img;
         scales[f[1]] = m.scale;
         std::ostringstream l2;
-        l2 << sceneName << ',' << f[1] << ",vtk92_scattering,-,-,-,-,-,-,-," << scene.SampleDistance << ','
-           << f[2] << ',' << row.Ms << ',' << m.rmse << ',' << m.psnr << ',' << m.ssim << ',' << m.scale << ','
-           << spp << ',' << refSe;
+        l2 << sceneName << ',' << f[1] << ",vtk92_scattering,-,-,-,-,-,-,-," << scene.SampleDistance
+           << ',' << f[2] << ',' << row.Ms << ',' << m.rmse << ',' << m.psnr << ',' << m.ssim << ','
+           << m.scale << ',' << spp << ',' << refSe;
         csvLines.push_back(l2.str());
-        std::printf("%-12s %-32s %9.1f ms  RMSE %.4f  PSNR %6.2f dB  SSIM %.4f\n", sceneName.c_str(),
-          f[1].c_str(), row.Ms, m.rmse, m.psnr, m.ssim);
+        std::printf("%-12s %-32s %9.1f ms  RMSE %.4f  PSNR %6.2f dB  SSIM %.4f\n",
+          sceneName.c_str(), f[1].c_str(), row.Ms, m.rmse, m.psnr, m.ssim);
       }
     }
     // Pareto front (time, RMSE) of this scene.
@@ -586,7 +603,8 @@ int main(int argc, char* argv[])
         continue;
       r.Pareto = true;
       for (const Row& o : rows)
-        if (o.Scene == sceneName && &o != &r && o.Ms <= r.Ms && o.Rmse <= r.Rmse && (o.Ms < r.Ms || o.Rmse < r.Rmse))
+        if (o.Scene == sceneName && &o != &r && o.Ms <= r.Ms && o.Rmse <= r.Rmse &&
+          (o.Ms < r.Ms || o.Rmse < r.Rmse))
           r.Pareto = false;
     }
     WritePlot(rows, sceneName, out + "/accuracy-" + sceneName + ".png");
@@ -595,7 +613,9 @@ int main(int argc, char* argv[])
     std::string best;
     double bestRmse = 1e300;
     for (const Row& r : rows)
-      if (r.Scene == sceneName && (r.Config.rfind("template", 0) == 0 || r.Config.rfind("transport", 0) == 0) && r.Rmse < bestRmse)
+      if (r.Scene == sceneName &&
+        (r.Config.rfind("template", 0) == 0 || r.Config.rfind("transport", 0) == 0) &&
+        r.Rmse < bestRmse)
       {
         bestRmse = r.Rmse;
         best = r.Config;
@@ -608,7 +628,8 @@ int main(int argc, char* argv[])
     for (const std::string& p : panels)
       if (images.count(p))
       {
-        append->AddInputData(BytesImage(ToBytes(images[p], scales[p] * refExposure), width, height));
+        append->AddInputData(
+          BytesImage(ToBytes(images[p], scales[p] * refExposure), width, height));
         maps.push_back(scatterer_reference::errorMap(images[p], ref, width, height, scales[p]));
       }
     for (const auto& map : maps)

@@ -9,19 +9,23 @@
 
 using namespace scatterer;
 
-namespace {
+namespace
+{
 
 void BM_Generate4Materials8Templates(benchmark::State& state)
 {
   const std::vector<Material> materials = exampleTissueMaterials();
   const GeneratorSettings settings; // 4 lights, threshold 0.01, 8 templates
   std::size_t photons = 0;
-  for (auto _ : state) {
+  for (auto _ : state)
+  {
     const auto all = generateAllTemplates(materials, settings);
     benchmark::DoNotOptimize(all.data());
     photons = 0;
-    for (const auto& templates : all) {
-      for (const Template& t : templates) {
+    for (const auto& templates : all)
+    {
+      for (const Template& t : templates)
+      {
         photons += t.photons.size();
       }
     }
@@ -37,7 +41,8 @@ void BM_GenerateOneTemplateHalfOpacity(benchmark::State& state)
   Material m;
   m.opacity = 0.5;
   const GeneratorSettings settings;
-  for (auto _ : state) {
+  for (auto _ : state)
+  {
     Template t = generateTemplate(m, settings, 0);
     benchmark::DoNotOptimize(t.photons.data());
   }
@@ -49,7 +54,8 @@ void BM_Pack4x8(benchmark::State& state)
   const auto all = generateAllTemplates(exampleTissueMaterials(), GeneratorSettings{});
   const auto format = state.range(0) == 16 ? TexelFormat::RGBA16F : TexelFormat::RGBA32F;
   std::size_t bytes = 0;
-  for (auto _ : state) {
+  for (auto _ : state)
+  {
     PackedTemplates p = packTemplates(all, 64, format);
     benchmark::DoNotOptimize(p.rgba.data());
     bytes = p.byteCount();

@@ -20,7 +20,10 @@ namespace
 EGLDisplay g_display = EGL_NO_DISPLAY;
 EGLContext g_context = EGL_NO_CONTEXT;
 
-const char* Str(const char* s) { return s ? s : "(null)"; }
+const char* Str(const char* s)
+{
+  return s ? s : "(null)";
+}
 
 const char* EglErr()
 {
@@ -66,11 +69,12 @@ EGLDisplay OpenDisplay()
 {
   const char* clientExt = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
   std::printf("EGL client extensions: %s\n", Str(clientExt));
-  auto queryDevices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
+  auto queryDevices =
+    reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
   auto queryDeviceString =
     reinterpret_cast<PFNEGLQUERYDEVICESTRINGEXTPROC>(eglGetProcAddress("eglQueryDeviceStringEXT"));
-  auto getPlatformDisplay =
-    reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
+  auto getPlatformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
+    eglGetProcAddress("eglGetPlatformDisplayEXT"));
   const bool hasDevice = clientExt && std::strstr(clientExt, "EGL_EXT_platform_device");
   if (!Env("SCATTERER_EGL_DEFAULT") && hasDevice && queryDevices && getPlatformDisplay)
   {
@@ -83,11 +87,13 @@ EGLDisplay OpenDisplay()
       {
         if (pick && *pick && std::atoi(pick) != i)
           continue;
-        const char* dext = queryDeviceString ? queryDeviceString(devices[i], EGL_EXTENSIONS) : nullptr;
+        const char* dext =
+          queryDeviceString ? queryDeviceString(devices[i], EGL_EXTENSIONS) : nullptr;
         const char* drm = (dext && std::strstr(dext, "EGL_EXT_device_drm") && queryDeviceString)
           ? queryDeviceString(devices[i], EGL_DRM_DEVICE_FILE_EXT)
           : nullptr;
-        std::printf("EGL device %d of %d: extensions \"%s\" drm \"%s\"\n", i, n, Str(dext), Str(drm));
+        std::printf(
+          "EGL device %d of %d: extensions \"%s\" drm \"%s\"\n", i, n, Str(dext), Str(drm));
         const std::string what = "EGL_PLATFORM_DEVICE_EXT device " + std::to_string(i);
         EGLDisplay dpy = InitDisplay(
           getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr), what.c_str());
@@ -155,9 +161,9 @@ using GetDisplayFn = void* (*)();
 void* ShimGetCurrentDisplay()
 {
   static auto real = Real<GetProcFn>("glXGetProcAddressARB");
-  static auto realGet =
-    real ? reinterpret_cast<GetDisplayFn>(real(reinterpret_cast<const unsigned char*>("glXGetCurrentDisplay")))
-         : nullptr;
+  static auto realGet = real ? reinterpret_cast<GetDisplayFn>(real(
+                                 reinterpret_cast<const unsigned char*>("glXGetCurrentDisplay")))
+                             : nullptr;
   void* d = realGet ? realGet() : nullptr;
   if (!d && ShimActive())
   {
@@ -247,16 +253,18 @@ bool Context::Create(int width, int height)
   EGLConfig config = nullptr;
   EGLint count = 0;
   bool pbuffer = !Env("SCATTERER_EGL_SURFACELESS");
-  const EGLint pbufferAttribs[] = { EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RED_SIZE, 8, EGL_GREEN_SIZE,
-    8, EGL_BLUE_SIZE, 8, EGL_ALPHA_SIZE, 8, EGL_DEPTH_SIZE, 24, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
-    EGL_NONE };
+  const EGLint pbufferAttribs[] = { EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RED_SIZE, 8,
+    EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8, EGL_ALPHA_SIZE, 8, EGL_DEPTH_SIZE, 24, EGL_RENDERABLE_TYPE,
+    EGL_OPENGL_BIT, EGL_NONE };
   if (!pbuffer || !eglChooseConfig(this->Display, pbufferAttribs, &config, 1, &count) || count < 1)
   {
     if (pbuffer)
       std::printf("EGL: no pbuffer RGBA8/D24 OpenGL config (%s)\n", EglErr());
     pbuffer = false;
-    const EGLint anyAttribs[] = { EGL_SURFACE_TYPE, 0, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE };
-    if (!surfaceless || !eglChooseConfig(this->Display, anyAttribs, &config, 1, &count) || count < 1)
+    const EGLint anyAttribs[] = { EGL_SURFACE_TYPE, 0, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
+      EGL_NONE };
+    if (!surfaceless || !eglChooseConfig(this->Display, anyAttribs, &config, 1, &count) ||
+      count < 1)
     {
       std::printf("EGL: no usable OpenGL config (surfaceless %d, %s)\n", surfaceless, EglErr());
       return false;
@@ -269,12 +277,12 @@ bool Context::Create(int width, int height)
   };
   std::vector<Try> tries;
   if (!Env("SCATTERER_EGL_COMPAT"))
-    tries.push_back({ "3.2 core", { EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 2,
-                                    EGL_CONTEXT_OPENGL_PROFILE_MASK,
-                                    EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE } });
-  tries.push_back({ "3.2 compatibility", { EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 2,
-                                             EGL_CONTEXT_OPENGL_PROFILE_MASK,
-                                             EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT, EGL_NONE } });
+    tries.push_back({ "3.2 core",
+      { EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 2, EGL_CONTEXT_OPENGL_PROFILE_MASK,
+        EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE } });
+  tries.push_back({ "3.2 compatibility",
+    { EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 2, EGL_CONTEXT_OPENGL_PROFILE_MASK,
+      EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT, EGL_NONE } });
   tries.push_back({ "default", { EGL_NONE } });
   for (const Try& t : tries)
   {
@@ -301,10 +309,9 @@ bool Context::Create(int width, int height)
     }
   }
   std::printf("EGL: %s\n",
-    this->Surface != EGL_NO_SURFACE ? ("pbuffer " + std::to_string(width) + "x" +
-                                        std::to_string(height))
-                                        .c_str()
-                                    : "surfaceless (VTK's own framebuffer only)");
+    this->Surface != EGL_NO_SURFACE
+      ? ("pbuffer " + std::to_string(width) + "x" + std::to_string(height)).c_str()
+      : "surfaceless (VTK's own framebuffer only)");
   g_display = this->Display;
   g_context = this->Ctx;
   if (!this->MakeCurrent())
@@ -314,7 +321,8 @@ bool Context::Create(int width, int height)
 
 void Context::Attach(vtkGenericOpenGLRenderWindow* window)
 {
-  auto add = [&](unsigned long event, void (*fn)(vtkObject*, unsigned long, void*, void*)) {
+  auto add = [&](unsigned long event, void (*fn)(vtkObject*, unsigned long, void*, void*))
+  {
     vtkNew<vtkCallbackCommand> cb;
     cb->SetCallback(fn);
     cb->SetClientData(this);

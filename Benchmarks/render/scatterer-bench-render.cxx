@@ -225,8 +225,9 @@ int main(int argc, char* argv[])
       const auto start = std::chrono::steady_clock::now();
       window->Render();
       window->WaitForCompletion();
-      ms.push_back(std::chrono::duration<double, std::milli>(
-        std::chrono::steady_clock::now() - start).count());
+      ms.push_back(
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+          .count());
       buildMs.push_back(st ? st->GetLastTransportBuildMilliseconds() : 0.0);
     }
     const double median = Median(ms);
@@ -243,9 +244,9 @@ int main(int argc, char* argv[])
       st->GetTransportVolume()->GetDimensions(tdims);
       gpuMiB = st->GetTransportVolume()->GetGPUBytes() / (1024.0 * 1024.0);
     }
-    const std::string tname = st ? std::to_string(tdims[0]) + "x" + std::to_string(tdims[1]) +
-        "x" + std::to_string(tdims[2])
-                                 : "-";
+    const std::string tname = st
+      ? std::to_string(tdims[0]) + "x" + std::to_string(tdims[1]) + "x" + std::to_string(tdims[2])
+      : "-";
     csv << volumeName << ',' << config.Name << ',' << config.Mode << ','
         << (st ? config.Illumination : "-") << ',' << config.Orbit << ',' << config.Interactive
         << ",\"" << shader << "\"," << frames << ',' << median << ','

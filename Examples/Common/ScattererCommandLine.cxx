@@ -11,7 +11,8 @@ void SetUpCommandLine(CLI::App& app)
   const std::string program = app.get_name();
   app.set_help_flag("-h,--help", "this text");
   app.set_version_flag(
-    "--version", [program]() { return VersionText(program); }, "the ScattererTemplate and VTK versions");
+    "--version", [program]() { return VersionText(program); },
+    "the ScattererTemplate and VTK versions");
   // Wide enough for "--multiple-scattering K"; CLI11 indents continued description lines.
   app.get_formatter()->column_width(28);
 }
@@ -31,7 +32,8 @@ CLI::Option* AddValueOption(CLI::App& app, const std::string& name, const std::s
 {
   // TakeAll keeps every occurrence, so a repeat with another value can be refused;
   // CLI11's default would stop at the second occurrence with a less helpful message.
-  const auto take = [name, set](const std::vector<std::string>& values) {
+  const auto take = [name, set](const std::vector<std::string>& values)
+  {
     for (const std::string& v : values)
     {
       if (v != values.front())

@@ -18,7 +18,8 @@ class vtkVolumeProperty;
 
 namespace scatterer_examples
 {
-/** The data cache: $SCATTERER_DATA_DIR, else $XDG_CACHE_HOME/scatterer-template, else ~/.cache/... */
+/** The data cache: $SCATTERER_DATA_DIR, else $XDG_CACHE_HOME/scatterer-template, else ~/.cache/...
+ */
 std::string DataDirectory();
 
 /** The prepared CT head (scripts/prepare-data.sh writes it). */

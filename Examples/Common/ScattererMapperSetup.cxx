@@ -59,9 +59,11 @@ std::string DescribeSettings(vtkGPUVolumeRayCastMapper* mapper)
   }
   std::ostringstream out;
   out << "illumination="
-      << (m->GetIlluminationMode() == vtkScattererTemplateVolumeMapper::TRANSPORT ? "transport" : "per-sample")
+      << (m->GetIlluminationMode() == vtkScattererTemplateVolumeMapper::TRANSPORT ? "transport"
+                                                                                  : "per-sample")
       << " transport_scale=" << m->GetTransportScale()
-      << " multiple_scattering=" << m->GetMultipleScattering() << " radius=" << (m->GetTemplateRadius() > 0 ? std::to_string(m->GetTemplateRadius()) : "auto")
+      << " multiple_scattering=" << m->GetMultipleScattering() << " radius="
+      << (m->GetTemplateRadius() > 0 ? std::to_string(m->GetTemplateRadius()) : "auto")
       << " templates=" << m->GetTemplatesPerMaterial() << " photons=" << m->GetPhotonCap()
       << " interval=" << m->GetIlluminationInterval() << " threshold=" << m->GetPhotonThreshold()
       << " strength=" << m->GetOcclusionStrength() << " long_range=" << m->GetLongRangeMultiple()
@@ -69,8 +71,8 @@ std::string DescribeSettings(vtkGPUVolumeRayCastMapper* mapper)
   return out.str();
 }
 
-vtkVolume* AddVolume(vtkRenderer* renderer, vtkAbstractVolumeMapper* mapper,
-  vtkVolumeProperty* property)
+vtkVolume* AddVolume(
+  vtkRenderer* renderer, vtkAbstractVolumeMapper* mapper, vtkVolumeProperty* property)
 {
   vtkNew<vtkVolume> volume;
   volume->SetMapper(mapper);

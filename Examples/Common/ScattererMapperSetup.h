@@ -28,8 +28,8 @@ std::string DescribeSettings(vtkGPUVolumeRayCastMapper* mapper);
  * Adds a volume of @p mapper and @p property to @p renderer and returns it (the
  * renderer holds it): the set-up of the examples, the benchmarks and the rendering tests.
  */
-vtkVolume* AddVolume(vtkRenderer* renderer, vtkAbstractVolumeMapper* mapper,
-  vtkVolumeProperty* property);
+vtkVolume* AddVolume(
+  vtkRenderer* renderer, vtkAbstractVolumeMapper* mapper, vtkVolumeProperty* property);
 }
 
 #endif

@@ -49,7 +49,8 @@ std::string DecimalSyntaxProblem(const std::string& text, bool integer)
     return "hexadecimal is not accepted; write the number in decimal";
   }
   // [+-] digits [. digits] [e [+-] digits], or [+-] . digits [e ...].
-  const auto digits = [&]() {
+  const auto digits = [&]()
+  {
     const size_t from = i;
     while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i])))
     {

@@ -42,7 +42,8 @@ CLI::Option* AddChoice(CLI::App& app, const std::string& name, const std::string
   const std::vector<std::string>& choices, const std::string& description, std::string& target)
 {
   return AddValueOption(app, name, valueName, description,
-    [name, choices, &target](const std::string& v) {
+    [name, choices, &target](const std::string& v)
+    {
       if (std::find(choices.begin(), choices.end(), v) == choices.end())
       {
         std::string list;
@@ -56,7 +57,8 @@ CLI::Option* AddChoice(CLI::App& app, const std::string& name, const std::string
     });
 }
 
-CLI::Option* AddOnOff(CLI::App& app, const std::string& name, const std::string& description, bool& target);
+CLI::Option* AddOnOff(
+  CLI::App& app, const std::string& name, const std::string& description, bool& target);
 
 /** --name on|off for a switch of the mapper: its default from the record. */
 CLI::Option* AddSwitch(CLI::App& app, const std::string& name,
@@ -65,38 +67,45 @@ CLI::Option* AddSwitch(CLI::App& app, const std::string& name,
   return AddOnOff(app, name, what + " (default " + (setting.Default ? "on" : "off") + ")", target);
 }
 
-CLI::Option* AddOnOff(CLI::App& app, const std::string& name, const std::string& description, bool& target)
+CLI::Option* AddOnOff(
+  CLI::App& app, const std::string& name, const std::string& description, bool& target)
 {
-  return AddValueOption(app, name, "on|off", description, [name, &target](const std::string& v) {
-    if (!ParseOnOff(v, target))
+  return AddValueOption(app, name, "on|off", description,
+    [name, &target](const std::string& v)
     {
-      ThrowUsageError(name + " must be on or off, got '" + v + "'");
-    }
-  });
+      if (!ParseOnOff(v, target))
+      {
+        ThrowUsageError(name + " must be on or off, got '" + v + "'");
+      }
+    });
 }
 
 CLI::Option* AddInt(CLI::App& app, const std::string& name, const std::string& valueName, int lo,
   int hi, const std::string& description, int& target)
 {
-  return AddValueOption(app, name, valueName, description, [=, &target](const std::string& v) {
-    std::string why;
-    if (!ParseInt(v, lo, hi, target, why))
+  return AddValueOption(app, name, valueName, description,
+    [=, &target](const std::string& v)
     {
-      BadValue(name, v, why);
-    }
-  });
+      std::string why;
+      if (!ParseInt(v, lo, hi, target, why))
+      {
+        BadValue(name, v, why);
+      }
+    });
 }
 
 CLI::Option* AddDouble(CLI::App& app, const std::string& name, const std::string& valueName,
   double lo, double hi, const std::string& description, double& target)
 {
-  return AddValueOption(app, name, valueName, description, [=, &target](const std::string& v) {
-    std::string why;
-    if (!ParseDouble(v, lo, hi, target, why))
+  return AddValueOption(app, name, valueName, description,
+    [=, &target](const std::string& v)
     {
-      BadValue(name, v, why);
-    }
-  });
+      std::string why;
+      if (!ParseDouble(v, lo, hi, target, why))
+      {
+        BadValue(name, v, why);
+      }
+    });
 }
 
 /** The help text of a mapper setting: @p what, then a line "lo..hi (default d)" from the record. */
@@ -111,7 +120,8 @@ std::string SettingHelp(const std::string& what, const scatterer::illumination::
 CLI::Option* AddSetting(CLI::App& app, const std::string& name, const std::string& valueName,
   const scatterer::illumination::Setting<int>& setting, const std::string& what, int& target)
 {
-  return AddInt(app, name, valueName, setting.Minimum, setting.Maximum, SettingHelp(what, setting), target);
+  return AddInt(
+    app, name, valueName, setting.Minimum, setting.Maximum, SettingHelp(what, setting), target);
 }
 
 /** --name X for a real setting of the mapper: its range and default from the record. */
@@ -159,7 +169,8 @@ int ParseRenderOptions(int argc, char* argv[], RenderOptions& o)
     "(default: the prepared CT head)",
     [&o](const std::string& v) { o.Input = v; });
   AddValueOption(app, "--output", "FILE.png", "image to write (default ct-head.png)",
-    [&o](const std::string& v) {
+    [&o](const std::string& v)
+    {
       if (v.size() < 5 || v.substr(v.size() - 4) != ".png")
       {
         ThrowUsageError("--output must name a .png file, got '" + v + "'");
@@ -167,7 +178,8 @@ int ParseRenderOptions(int argc, char* argv[], RenderOptions& o)
       o.Output = v;
     });
   AddValueOption(app, "--size", "WxH", "window size, 16..8192 each (default 512x512)",
-    [&o](const std::string& v) {
+    [&o](const std::string& v)
+    {
       std::string why;
       if (!ParseSize(v, o.Width, o.Height, why))
       {
@@ -195,29 +207,30 @@ int ParseRenderOptions(int argc, char* argv[], RenderOptions& o)
   const std::string group = "Template illumination (--mode template only)";
   namespace il = scatterer::illumination;
   both.push_back(AddSwitch(app, "--shadows", il::Shadows, "occlusion: shadows", o.Shadows));
-  both.push_back(
-    AddSwitch(app, "--bleeding", il::ColorBleeding, "colour bleeding between materials", o.Bleeding));
-  perSample.push_back(
-    AddSwitch(app, "--thin", il::ThinPartCheck, "per-sample: thin-part check toward the light", o.Thin));
   both.push_back(AddSwitch(
-    app, "--boundary", il::BoundaryRefraction, "Snell rescaling across material boundaries", o.Boundary));
-  perSample.push_back(
-    AddSwitch(app, "--blend", il::TemplateBlending, "per-sample: average two templates per sample", o.Blend));
+    app, "--bleeding", il::ColorBleeding, "colour bleeding between materials", o.Bleeding));
+  perSample.push_back(AddSwitch(
+    app, "--thin", il::ThinPartCheck, "per-sample: thin-part check toward the light", o.Thin));
+  both.push_back(AddSwitch(app, "--boundary", il::BoundaryRefraction,
+    "Snell rescaling across material boundaries", o.Boundary));
+  perSample.push_back(AddSwitch(
+    app, "--blend", il::TemplateBlending, "per-sample: average two templates per sample", o.Blend));
   both.push_back(AddValueOption(app, "--paths", "auto|requested",
     "shader code for what the scene needs (auto, default)\nor for every effect switched on",
-    [&o](const std::string& v) {
+    [&o](const std::string& v)
+    {
       if (v != "auto" && v != "requested")
       {
         ThrowUsageError("--paths must be auto or requested, got '" + v + "'");
       }
       o.RequestedPaths = v == "requested";
     }));
-  CLI::Option* illumination = AddChoice(app, "--illumination", "transport|per-sample",
-    { "transport", "per-sample" },
-    "light transport volume built on the GPU and read by every\n"
-    "sample (transport, default), or the paper's local photon test\n"
-    "in the shader at every sample",
-    o.Illumination);
+  CLI::Option* illumination =
+    AddChoice(app, "--illumination", "transport|per-sample", { "transport", "per-sample" },
+      "light transport volume built on the GPU and read by every\n"
+      "sample (transport, default), or the paper's local photon test\n"
+      "in the shader at every sample",
+      o.Illumination);
   both.push_back(illumination);
   transport.push_back(AddSetting(app, "--transport-scale", "N", il::TransportScale,
     "transport: volume voxels per transport voxel per axis", o.TransportScale));
@@ -247,36 +260,40 @@ int ParseRenderOptions(int argc, char* argv[], RenderOptions& o)
   }
 
   // Combinations whose one part would be silently ignored are refused, naming both.
-  app.callback([&]() {
-    for (auto* list : { &both, &perSample, &transport })
+  app.callback(
+    [&]()
     {
-      for (const CLI::Option* option : *list)
+      for (auto* list : { &both, &perSample, &transport })
       {
-        if (option->count() > 0 && o.Mode != "template")
+        for (const CLI::Option* option : *list)
         {
-          ThrowConflict(option->get_name(), "--mode " + o.Mode,
-            option->get_name() + " sets template illumination, which only --mode template has");
+          if (option->count() > 0 && o.Mode != "template")
+          {
+            ThrowConflict(option->get_name(), "--mode " + o.Mode,
+              option->get_name() + " sets template illumination, which only --mode template has");
+          }
         }
       }
-    }
-    const bool explicitIllumination = illumination->count() > 0;
-    const auto& ignored = o.Illumination == "transport" ? perSample : transport;
-    for (const CLI::Option* option : ignored)
-    {
-      if (option->count() > 0)
+      const bool explicitIllumination = illumination->count() > 0;
+      const auto& ignored = o.Illumination == "transport" ? perSample : transport;
+      for (const CLI::Option* option : ignored)
       {
-        ThrowConflict(option->get_name(), "--illumination " + o.Illumination,
-          option->get_name() + " is for " +
-            (o.Illumination == "transport" ? "per-sample" : "transport") + " illumination only" +
-            (explicitIllumination ? "" : " (transport is the default; add --illumination per-sample)"));
+        if (option->count() > 0)
+        {
+          ThrowConflict(option->get_name(), "--illumination " + o.Illumination,
+            option->get_name() + " is for " +
+              (o.Illumination == "transport" ? "per-sample" : "transport") + " illumination only" +
+              (explicitIllumination
+                  ? ""
+                  : " (transport is the default; add --illumination per-sample)"));
+        }
       }
-    }
-    if (scene->count() > 0 && o.Scene == "auto" && input->count() == 0)
-    {
-      ThrowUsageError("--scene auto needs --input: the default CT head is always shown in its "
-                      "ct-head scene");
-    }
-  });
+      if (scene->count() > 0 && o.Scene == "auto" && input->count() == 0)
+      {
+        ThrowUsageError("--scene auto needs --input: the default CT head is always shown in its "
+                        "ct-head scene");
+      }
+    });
   return ParseCommandLine(app, argc, argv);
 }
 

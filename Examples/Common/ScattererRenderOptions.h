@@ -14,10 +14,10 @@ namespace scatterer_examples
 {
 struct RenderOptions
 {
-  std::string Input;                    // empty: the prepared CT head
+  std::string Input; // empty: the prepared CT head
   std::string Output = "ct-head.png";
-  std::string Mode = "template";        // stock | phong | template
-  std::string Scene = "auto";           // auto | ct-head (scene for --input volumes)
+  std::string Mode = "template"; // stock | phong | template
+  std::string Scene = "auto";    // auto | ct-head (scene for --input volumes)
   int Width = 512;
   int Height = 512;
   int Frames = 1;

@@ -158,7 +158,8 @@ TransferPoints Hounsfield(const char* name, std::vector<std::array<double, 2>> o
 
 const std::vector<std::string>& TransferPresetNames()
 {
-  static const std::vector<std::string> names = [] {
+  static const std::vector<std::string> names = []
+  {
     std::vector<std::string> all;
     for (const PresetInfo& p : Presets)
     {
@@ -180,8 +181,8 @@ std::string TransferPresetHelp()
   return out.str();
 }
 
-bool MakeTransferPreset(
-  const std::string& name, const VolumeHistogram& histogram, TransferPoints& points, std::string& why)
+bool MakeTransferPreset(const std::string& name, const VolumeHistogram& histogram,
+  TransferPoints& points, std::string& why)
 {
   const double lo = histogram.Minimum();
   const double hi = histogram.Maximum();
@@ -197,7 +198,8 @@ bool MakeTransferPreset(
   }
   else if (name == "ct-bone")
   {
-    points = Hounsfield("ct-bone", { { -1024, 0.0 }, { 150, 0.0 }, { 300, 0.3 }, { 700, 0.9 }, { 3000, 0.95 } },
+    points = Hounsfield("ct-bone",
+      { { -1024, 0.0 }, { 150, 0.0 }, { 300, 0.3 }, { 700, 0.9 }, { 3000, 0.95 } },
       { { -1024, 0.8, 0.6, 0.45 }, { 150, 0.85, 0.7, 0.55 }, { 400, 0.95, 0.9, 0.8 },
         { 3000, 1.0, 1.0, 1.0 } });
   }
@@ -225,7 +227,8 @@ bool MakeTransferPreset(
     const double t = histogram.OtsuThreshold(lo, hi);
     const double median = std::max(histogram.Quantile(0.5, t), t + 1e-6 * (hi - lo));
     const double top = std::max(histogram.Quantile(0.99, t), median + 1e-6 * (hi - lo));
-    points = TransferPoints{ "mri", { { lo, 0.0 }, { t, 0.0 }, { median, 0.25 }, { top, 0.7 }, { hi, 0.7 } },
+    points = TransferPoints{ "mri",
+      { { lo, 0.0 }, { t, 0.0 }, { median, 0.25 }, { top, 0.7 }, { hi, 0.7 } },
       { { lo, 0.5, 0.4, 0.4 }, { t, 0.7, 0.55, 0.5 }, { median, 0.9, 0.8, 0.75 },
         { top, 1.0, 1.0, 1.0 }, { hi, 1.0, 1.0, 1.0 } } };
   }

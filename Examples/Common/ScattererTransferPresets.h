@@ -14,7 +14,8 @@ class vtkVolumeProperty;
 
 namespace scatterer_examples
 {
-/** Opacity (value, opacity per voxel) and colour (value, r, g, b) points of one transfer function. */
+/** Opacity (value, opacity per voxel) and colour (value, r, g, b) points of one transfer function.
+ */
 struct TransferPoints
 {
   std::string Name;
@@ -60,8 +61,8 @@ std::string TransferPresetHelp();
  * The preset @p name for @p image ("auto" is the histogram-chosen one); false with
  * @p why naming the known presets when @p name is not one.
  */
-bool MakeTransferPreset(
-  const std::string& name, const VolumeHistogram& histogram, TransferPoints& points, std::string& why);
+bool MakeTransferPreset(const std::string& name, const VolumeHistogram& histogram,
+  TransferPoints& points, std::string& why);
 
 /**
  * The preset the viewer opens unknown data with: "ct-head" (the benchmark scene's

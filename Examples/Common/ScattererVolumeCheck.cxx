@@ -51,8 +51,8 @@ std::string CheckVolume(vtkImageData* image, const std::string& path, bool autoS
   image->GetDimensions(dims);
   if (dims[0] < 2 || dims[1] < 2 || dims[2] < 2)
   {
-    return refused + "it has " + std::to_string(dims[0]) + " x " + std::to_string(dims[1]) +
-      " x " + std::to_string(dims[2]) +
+    return refused + "it has " + std::to_string(dims[0]) + " x " + std::to_string(dims[1]) + " x " +
+      std::to_string(dims[2]) +
       " points; the ray caster needs at least 2 along each axis (a single voxel, row or "
       "slice has no thickness to march through and draws nothing).";
   }

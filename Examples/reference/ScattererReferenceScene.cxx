@@ -63,7 +63,8 @@ void MakeHardScene(VtkScene& scene, int n)
       for (int i = 0; i < n; ++i)
       {
         const double x = i * h, y = j * h, z = k * h;
-        const double r = std::sqrt((x - c[0]) * (x - c[0]) + (y - c[1]) * (y - c[1]) + (z - c[2]) * (z - c[2]));
+        const double r =
+          std::sqrt((x - c[0]) * (x - c[0]) + (y - c[1]) * (y - c[1]) + (z - c[2]) * (z - c[2]));
         unsigned char v = 0;
         if (std::abs(r - 26.0) <= 1.5)
           v = 100; // thin shell, material A
@@ -132,8 +133,8 @@ void ApplySceneView(const VtkScene& scene, vtkRenderer* renderer)
   renderer->SetTwoSidedLighting(scene.Renderer->GetTwoSidedLighting());
 }
 
-scatterer_reference::Scene Convert(vtkImageData* image, vtkVolumeProperty* property, vtkRenderer* renderer,
-  int width, int height, int tableSize, double albedoScale)
+scatterer_reference::Scene Convert(vtkImageData* image, vtkVolumeProperty* property,
+  vtkRenderer* renderer, int width, int height, int tableSize, double albedoScale)
 {
   namespace sr = scatterer_reference;
   sr::Scene scene;
@@ -161,11 +162,13 @@ scatterer_reference::Scene Convert(vtkImageData* image, vtkVolumeProperty* prope
   tableSize = std::max(2, tableSize);
   for (int e = 0; e < tableSize; ++e)
   {
-    const double s = v.table.scalarMin + (v.table.scalarMax - v.table.scalarMin) * e / (tableSize - 1);
+    const double s =
+      v.table.scalarMin + (v.table.scalarMax - v.table.scalarMin) * e / (tableSize - 1);
     v.table.sigmaT.push_back(static_cast<float>(sr::sigmaFromOpacity(opacity->GetValue(s), u)));
     double rgb[3];
     color->GetColor(s, rgb);
-    v.table.albedo.push_back(glm::clamp(glm::vec3(rgb[0], rgb[1], rgb[2]) * float(albedoScale), 0.0f, 1.0f));
+    v.table.albedo.push_back(
+      glm::clamp(glm::vec3(rgb[0], rgb[1], rgb[2]) * float(albedoScale), 0.0f, 1.0f));
   }
   vtkCamera* cam = renderer->GetActiveCamera();
   double p[3], f[3], up[3];
@@ -231,7 +234,8 @@ vtkSmartPointer<vtkImageData> ToImageData(const scatterer_reference::RenderResul
   return img;
 }
 
-static bool WriteRgb8(const std::vector<unsigned char>& px, int width, int height, const std::string& path)
+static bool WriteRgb8(
+  const std::vector<unsigned char>& px, int width, int height, const std::string& path)
 {
   vtkNew<vtkImageData> img;
   img->SetDimensions(width, height, 1);
@@ -244,11 +248,13 @@ static bool WriteRgb8(const std::vector<unsigned char>& px, int width, int heigh
   return w->GetErrorCode() == 0;
 }
 
-bool WritePng(const std::vector<float>& rgb, int width, int height, double exposure, const std::string& path)
+bool WritePng(
+  const std::vector<float>& rgb, int width, int height, double exposure, const std::string& path)
 {
   std::vector<unsigned char> px(rgb.size());
   for (size_t i = 0; i < rgb.size(); ++i)
-    px[i] = static_cast<unsigned char>(std::lround(255.0 * std::clamp(exposure * rgb[i], 0.0, 1.0)));
+    px[i] =
+      static_cast<unsigned char>(std::lround(255.0 * std::clamp(exposure * rgb[i], 0.0, 1.0)));
   return WriteRgb8(px, width, height, path);
 }
 
@@ -266,7 +272,8 @@ std::vector<unsigned char> HeatMapBytes(const std::vector<float>& map, double ma
   return px;
 }
 
-bool WriteMapPng(const std::vector<float>& map, int width, int height, double maxValue, const std::string& path)
+bool WriteMapPng(
+  const std::vector<float>& map, int width, int height, double maxValue, const std::string& path)
 {
   return WriteRgb8(HeatMapBytes(map, maxValue), width, height, path);
 }
@@ -275,7 +282,8 @@ double AutoExposure(const std::vector<float>& rgb)
 {
   std::vector<float> l(rgb.size() / 3);
   for (size_t i = 0; i < l.size(); ++i)
-    l[i] = static_cast<float>(scatterer_reference::luminance({ rgb[3 * i], rgb[3 * i + 1], rgb[3 * i + 2] }));
+    l[i] = static_cast<float>(
+      scatterer_reference::luminance({ rgb[3 * i], rgb[3 * i + 1], rgb[3 * i + 2] }));
   if (l.empty())
     return 1.0;
   const size_t k = static_cast<size_t>(0.995 * (l.size() - 1));

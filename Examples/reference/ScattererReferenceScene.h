@@ -37,7 +37,7 @@ struct VtkScene
   vtkSmartPointer<vtkImageData> Image;
   vtkSmartPointer<vtkVolumeProperty> Property;
   vtkSmartPointer<vtkRenderer> Renderer; // camera + lights (no window needed)
-  double SampleDistance = 0.5;            // the GPU mapper's sample distance for this scene
+  double SampleDistance = 0.5;           // the GPU mapper's sample distance for this scene
 };
 
 /** The CT head scene (the prepared volume, ct-head.json). False with @p error if missing. */
@@ -59,14 +59,15 @@ bool MakeNamedScene(const std::string& name, VtkScene& scene, std::string& error
 /** Applies the scene's camera and lights to another renderer (for the GPU mappers). */
 void ApplySceneView(const VtkScene& scene, vtkRenderer* renderer);
 
-scatterer_reference::Scene Convert(vtkImageData* image, vtkVolumeProperty* property, vtkRenderer* renderer,
-  int width, int height, int tableSize = 2048, double albedoScale = 1.0);
+scatterer_reference::Scene Convert(vtkImageData* image, vtkVolumeProperty* property,
+  vtkRenderer* renderer, int width, int height, int tableSize = 2048, double albedoScale = 1.0);
 
 /** Float RGB ("Radiance") + "StandardError" point data, width x height x 1. */
 vtkSmartPointer<vtkImageData> ToImageData(const scatterer_reference::RenderResult& result);
 
 /** clamp(exposure * rgb) to 8 bits, no gamma (as VTK's composite colours). */
-bool WritePng(const std::vector<float>& rgb, int width, int height, double exposure, const std::string& path);
+bool WritePng(
+  const std::vector<float>& rgb, int width, int height, double exposure, const std::string& path);
 
 /**
  * RGB bytes of a one-channel map as a black -> red -> yellow -> white heat map, scaled
@@ -75,12 +76,14 @@ bool WritePng(const std::vector<float>& rgb, int width, int height, double expos
 std::vector<unsigned char> HeatMapBytes(const std::vector<float>& map, double maxValue);
 
 /** A PNG of a one-channel map: HeatMapBytes. */
-bool WriteMapPng(const std::vector<float>& map, int width, int height, double maxValue, const std::string& path);
+bool WriteMapPng(
+  const std::vector<float>& map, int width, int height, double maxValue, const std::string& path);
 
 /** Exposure that maps the 99.5th percentile of luminance to 1. */
 double AutoExposure(const std::vector<float>& rgb);
 
-/** The RGB of a vtkImageData with unsigned char or float scalars (3 or 4 comps), to [0,1] floats. */
+/** The RGB of a vtkImageData with unsigned char or float scalars (3 or 4 comps), to [0,1] floats.
+ */
 std::vector<float> ToFloatRgb(vtkImageData* image);
 
 /** Writes .vti (XML) or .mha (MetaImage) by extension. */

@@ -1,8 +1,8 @@
 // Renders the Monte Carlo reference (Reference) of a VTK volume scene: the CT
 // head scene by default (Examples/Common/ScattererCtHeadScene.cxx), the synthetic shell +
-// plate scene, or any volume with the CT head's or the automatic transfer functions. Writes the float image (.vti or
-// .mha: "Radiance" RGB + per-pixel "StandardError") and a PNG, and prints the samples
-// per pixel and the noise estimate.
+// plate scene, or any volume with the CT head's or the automatic transfer functions. Writes the
+// float image (.vti or .mha: "Radiance" RGB + per-pixel "StandardError") and a PNG, and prints the
+// samples per pixel and the noise estimate.
 //
 // Run with --help for the options and the exit statuses.
 #include "ScattererReferenceScene.h"
@@ -39,37 +39,40 @@ struct ReferenceOptions
 CLI::Option* AddInt(CLI::App& app, const std::string& name, int lo, int hi,
   const std::string& description, std::function<void(int)> set)
 {
-  return scatterer_examples::AddValueOption(app, name, "N", description, [=](const std::string& v) {
-    int value = 0;
-    std::string why;
-    if (!scatterer_examples::ParseInt(v, lo, hi, value, why))
+  return scatterer_examples::AddValueOption(app, name, "N", description,
+    [=](const std::string& v)
     {
-      scatterer_examples::ThrowUsageError(name + " '" + v + "': " + why);
-    }
-    set(value);
-  });
+      int value = 0;
+      std::string why;
+      if (!scatterer_examples::ParseInt(v, lo, hi, value, why))
+      {
+        scatterer_examples::ThrowUsageError(name + " '" + v + "': " + why);
+      }
+      set(value);
+    });
 }
 
 /** ContinueRun, or the exit status once --help, --version or a usage error is printed. */
-int ParseArgs(int argc, char* argv[], ReferenceOptions& o, scatterer_reference::RenderSettings& settings)
+int ParseArgs(
+  int argc, char* argv[], ReferenceOptions& o, scatterer_reference::RenderSettings& settings)
 {
   CLI::App app("Monte Carlo volumetric path tracing (delta tracking, NEE with ratio tracking) of\n"
                "the scene; writes PREFIX.vti (float RGB radiance + standard error) and PREFIX.png\n"
                "and prints one JSON line.",
     "scatterer-reference");
   scatterer_examples::SetUpCommandLine(app);
-  app.footer(
-    "Numbers are plain decimal integers (as in scatterer-render); every option takes\n"
-    "--opt VALUE or --opt=VALUE, at most once (again only with the same value).\n"
-    "Refused as contradictory: --scene shell-plate with --input (a built-in volume),\n"
-    "--scene auto without --input.\n"
-    "Exit status: 0 the images were written; 1 the volume or the prepared CT head cannot\n"
-    "be read, or an image cannot be written; 2 a bad command line (usage error).\n");
+  app.footer("Numbers are plain decimal integers (as in scatterer-render); every option takes\n"
+             "--opt VALUE or --opt=VALUE, at most once (again only with the same value).\n"
+             "Refused as contradictory: --scene shell-plate with --input (a built-in volume),\n"
+             "--scene auto without --input.\n"
+             "Exit status: 0 the images were written; 1 the volume or the prepared CT head cannot\n"
+             "be read, or an image cannot be written; 2 a bad command line (usage error).\n");
   CLI::Option* scene = scatterer_examples::AddValueOption(app, "--scene", "SCENE",
     "ct-head (default: the prepared CT head, " + scatterer_examples::CtHeadPath() +
       ",\nmade by scripts/prepare-data.sh in the source tree, or --input in that scene),\n"
       "shell-plate (synthetic), or auto (--input with automatic transfer functions)",
-    [&o](const std::string& v) {
+    [&o](const std::string& v)
+    {
       if (v != "ct-head" && v != "shell-plate" && v != "auto")
       {
         scatterer_examples::ThrowUsageError(
@@ -80,8 +83,10 @@ int ParseArgs(int argc, char* argv[], ReferenceOptions& o, scatterer_reference::
   CLI::Option* input = scatterer_examples::AddValueOption(app, "--input", "VOLUME",
     "volume file, DICOM folder or one file of a DICOM series, in the ct-head scene or --scene auto",
     [&o](const std::string& v) { o.Input = v; });
-  scatterer_examples::AddValueOption(
-    app, "--size", "WxH", "image size, 16..8192 each (default 256x256)", [&o](const std::string& v) {
+  scatterer_examples::AddValueOption(app, "--size", "WxH",
+    "image size, 16..8192 each (default 256x256)",
+    [&o](const std::string& v)
+    {
       std::string why;
       if (!scatterer_examples::ParseSize(v, o.Width, o.Height, why))
       {
@@ -96,11 +101,12 @@ int ParseArgs(int argc, char* argv[], ReferenceOptions& o, scatterer_reference::
     [&settings](int v) { settings.seed = static_cast<std::uint64_t>(v); });
   AddInt(app, "--threads", 0, 4096, "worker threads, 0..4096 (default 0: all cores)",
     [&settings](int v) { settings.threads = static_cast<unsigned>(v); });
-  scatterer_examples::AddValueOption(app, "--output", "PREFIX",
-    "output prefix (default reference)", [&o](const std::string& v) { o.Output = v; });
+  scatterer_examples::AddValueOption(app, "--output", "PREFIX", "output prefix (default reference)",
+    [&o](const std::string& v) { o.Output = v; });
   scatterer_examples::AddValueOption(app, "--exposure", "E|auto",
     "PNG exposure > 0, or auto (default: 99.5th-percentile luminance -> 1)",
-    [&o](const std::string& v) {
+    [&o](const std::string& v)
+    {
       double e = 0.0;
       std::string why;
       if (v != "auto" && !scatterer_examples::ParseDouble(v, 1e-9, 1e9, e, why))
@@ -110,18 +116,20 @@ int ParseArgs(int argc, char* argv[], ReferenceOptions& o, scatterer_reference::
       o.Exposure = v;
     });
   app.add_flag("--quiet", o.Quiet, "no progress on stderr");
-  app.callback([&]() {
-    if (o.Scene == "shell-plate" && input->count() > 0)
+  app.callback(
+    [&]()
     {
-      scatterer_examples::ThrowConflict("--scene shell-plate", "--input",
-        "shell-plate is a built-in volume; for a file use --scene ct-head or auto");
-    }
-    if (o.Scene == "auto" && scene->count() > 0 && input->count() == 0)
-    {
-      scatterer_examples::ThrowUsageError(
-        "--scene auto needs --input: it lays transfer functions over a given volume");
-    }
-  });
+      if (o.Scene == "shell-plate" && input->count() > 0)
+      {
+        scatterer_examples::ThrowConflict("--scene shell-plate", "--input",
+          "shell-plate is a built-in volume; for a file use --scene ct-head or auto");
+      }
+      if (o.Scene == "auto" && scene->count() > 0 && input->count() == 0)
+      {
+        scatterer_examples::ThrowUsageError(
+          "--scene auto needs --input: it lays transfer functions over a given volume");
+      }
+    });
   return scatterer_examples::ParseCommandLine(app, argc, argv);
 }
 }
@@ -182,7 +190,8 @@ int main(int argc, char* argv[])
     scatterer_reference_vtk::Convert(scene.Image, scene.Property, scene.Renderer, width, height));
   if (!quiet)
   {
-    settings.progress = [](double f) {
+    settings.progress = [](double f)
+    {
       std::fprintf(stderr, "\rreference: %5.1f%%", 100.0 * f);
       if (f >= 1.0)
         std::fprintf(stderr, "\n");
@@ -196,17 +205,18 @@ int main(int argc, char* argv[])
     std::cerr << "scatterer-reference: cannot write " << floatPath << "\n";
     return 1;
   }
-  const double exposure =
-    exposureArg == "auto" ? scatterer_reference_vtk::AutoExposure(r.rgb) : std::atof(exposureArg.c_str());
+  const double exposure = exposureArg == "auto" ? scatterer_reference_vtk::AutoExposure(r.rgb)
+                                                : std::atof(exposureArg.c_str());
   if (!scatterer_reference_vtk::WritePng(r.rgb, r.width, r.height, exposure, output + ".png"))
   {
     std::cerr << "scatterer-reference: cannot write " << output << ".png\n";
     return 1;
   }
-  std::printf("{\"scene\": \"%s\", \"width\": %d, \"height\": %d, \"samples_per_pixel\": %d, "
-              "\"max_scattering_order\": %d, \"seed\": %llu, \"seconds\": %.2f, "
-              "\"mean_luminance\": %.6g, \"rms_standard_error\": %.6g, "
-              "\"relative_noise\": %.4g, \"exposure\": %.6g, \"float_image\": \"%s\", \"png\": \"%s.png\"}\n",
+  std::printf(
+    "{\"scene\": \"%s\", \"width\": %d, \"height\": %d, \"samples_per_pixel\": %d, "
+    "\"max_scattering_order\": %d, \"seed\": %llu, \"seconds\": %.2f, "
+    "\"mean_luminance\": %.6g, \"rms_standard_error\": %.6g, "
+    "\"relative_noise\": %.4g, \"exposure\": %.6g, \"float_image\": \"%s\", \"png\": \"%s.png\"}\n",
     scene.Name.c_str(), r.width, r.height, r.samplesPerPixel, settings.maxScatteringOrder,
     static_cast<unsigned long long>(settings.seed), r.seconds, r.meanLuminance, r.rmsStandardError,
     r.meanLuminance > 0 ? r.rmsStandardError / r.meanLuminance : 0.0, exposure, floatPath.c_str(),

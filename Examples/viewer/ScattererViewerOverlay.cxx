@@ -10,7 +10,8 @@
 
 namespace scatterer_viewer
 {
-void ViewerOverlay::Attach(vtkRenderWindow* window, vtkRenderer* volumeRenderer, const std::string& help)
+void ViewerOverlay::Attach(
+  vtkRenderWindow* window, vtkRenderer* volumeRenderer, const std::string& help)
 {
   this->Window = window;
   this->VolumeRenderer = volumeRenderer;

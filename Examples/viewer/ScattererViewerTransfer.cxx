@@ -27,7 +27,8 @@ void ViewerTransfer::Next()
 {
   const auto& names = scatterer_examples::TransferPresetNames();
   const auto at = std::find(names.begin(), names.end(), this->Points.Name);
-  const size_t next = at == names.end() ? 0 : (static_cast<size_t>(at - names.begin()) + 1) % names.size();
+  const size_t next =
+    at == names.end() ? 0 : (static_cast<size_t>(at - names.begin()) + 1) % names.size();
   std::string unused;
   this->Select(names[next], unused);
 }

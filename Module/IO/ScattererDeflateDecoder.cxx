@@ -58,7 +58,8 @@ int BuildHuffman(Huffman& h, const std::uint8_t* lengths, int n)
 class Inflater
 {
 public:
-  Inflater(const std::uint8_t* in, std::size_t size, std::size_t limit, std::vector<std::uint8_t>& out)
+  Inflater(
+    const std::uint8_t* in, std::size_t size, std::size_t limit, std::vector<std::uint8_t>& out)
     : In(in)
     , Size(size)
     , Limit(limit)
@@ -203,15 +204,14 @@ private:
 
   InflateStatus Codes(const Huffman& lengthCode, const Huffman& distanceCode, std::string& why)
   {
-    static const std::uint16_t lengthBase[29] = { 3, 4, 5, 6, 7, 8, 9, 10, 11, 13, 15, 17, 19,
-      23, 27, 31, 35, 43, 51, 59, 67, 83, 99, 115, 131, 163, 195, 227, 258 };
-    static const std::uint8_t lengthExtra[29] = { 0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2,
-      2, 3, 3, 3, 3, 4, 4, 4, 4, 5, 5, 5, 5, 0 };
-    static const std::uint16_t distanceBase[30] = { 1, 2, 3, 4, 5, 7, 9, 13, 17, 25, 33, 49,
-      65, 97, 129, 193, 257, 385, 513, 769, 1025, 1537, 2049, 3073, 4097, 6145, 8193, 12289,
-      16385, 24577 };
-    static const std::uint8_t distanceExtra[30] = { 0, 0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5,
-      6, 6, 7, 7, 8, 8, 9, 9, 10, 10, 11, 11, 12, 12, 13, 13 };
+    static const std::uint16_t lengthBase[29] = { 3, 4, 5, 6, 7, 8, 9, 10, 11, 13, 15, 17, 19, 23,
+      27, 31, 35, 43, 51, 59, 67, 83, 99, 115, 131, 163, 195, 227, 258 };
+    static const std::uint8_t lengthExtra[29] = { 0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3,
+      3, 3, 3, 4, 4, 4, 4, 5, 5, 5, 5, 0 };
+    static const std::uint16_t distanceBase[30] = { 1, 2, 3, 4, 5, 7, 9, 13, 17, 25, 33, 49, 65, 97,
+      129, 193, 257, 385, 513, 769, 1025, 1537, 2049, 3073, 4097, 6145, 8193, 12289, 16385, 24577 };
+    static const std::uint8_t distanceExtra[30] = { 0, 0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6, 6,
+      7, 7, 8, 8, 9, 9, 10, 10, 11, 11, 12, 12, 13, 13 };
     for (;;)
     {
       int symbol = this->Decode(lengthCode);
@@ -301,8 +301,8 @@ private:
 
   InflateStatus Dynamic(std::string& why)
   {
-    static const std::uint8_t order[19] = { 16, 17, 18, 0, 8, 7, 9, 6, 10, 5, 11, 4, 12, 3, 13,
-      2, 14, 1, 15 };
+    static const std::uint8_t order[19] = { 16, 17, 18, 0, 8, 7, 9, 6, 10, 5, 11, 4, 12, 3, 13, 2,
+      14, 1, 15 };
     unsigned nlen = 0;
     unsigned ndist = 0;
     unsigned ncode = 0;

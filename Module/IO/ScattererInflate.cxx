@@ -12,7 +12,8 @@ namespace
 {
 std::uint32_t Crc32(const std::uint8_t* data, std::size_t size)
 {
-  static const std::array<std::uint32_t, 256> table = [] {
+  static const std::array<std::uint32_t, 256> table = []
+  {
     std::array<std::uint32_t, 256> t{};
     for (std::uint32_t n = 0; n < 256; ++n)
     {

@@ -68,8 +68,8 @@ HeaderCheck CheckMetaImageHeader(const std::string& headerPath)
       const unsigned char c = static_cast<unsigned char>(line[i]);
       if ((c < 0x20 && c != '\t' && !(c == '\r' && i + 1 == line.size())) || c == 0x7f)
       {
-        problem = "header line " + std::to_string(lineNumber) + " holds a control character (byte " +
-          std::to_string(c) + ").";
+        problem = "header line " + std::to_string(lineNumber) +
+          " holds a control character (byte " + std::to_string(c) + ").";
         return check;
       }
     }
@@ -95,8 +95,8 @@ HeaderCheck CheckMetaImageHeader(const std::string& headerPath)
     }
     // MetaIO skips every '=', ':' and blank after the name.
     std::size_t v = sep;
-    while (v < trimmed.size() && (trimmed[v] == '=' || trimmed[v] == ':' || trimmed[v] == ' ' ||
-                                   trimmed[v] == '\t'))
+    while (v < trimmed.size() &&
+      (trimmed[v] == '=' || trimmed[v] == ':' || trimmed[v] == ' ' || trimmed[v] == '\t'))
     {
       ++v;
     }
@@ -138,8 +138,8 @@ HeaderCheck CheckMetaImageHeader(const std::string& headerPath)
   }
   if (!ParseInteger(fields["NDims"], &ndims) || ndims < 1 || ndims > 3)
   {
-    problem = "NDims is " + Quote(fields["NDims"]) +
-      "; VTK's MetaImage reader reads 1, 2 or 3 dimensions.";
+    problem =
+      "NDims is " + Quote(fields["NDims"]) + "; VTK's MetaImage reader reads 1, 2 or 3 dimensions.";
     return check;
   }
   const std::size_t n = static_cast<std::size_t>(ndims);
@@ -149,13 +149,12 @@ HeaderCheck CheckMetaImageHeader(const std::string& headerPath)
   // its count of numbers. (0: NDims numbers, -1: NDims x NDims.)
   static const std::map<std::string, int> numericFields = { { "NDims", 1 },
     { "FileFormatVersion", 1 }, { "ID", 1 }, { "ParentID", 1 }, { "CompressedDataSize", 1 },
-    { "HeaderSize", 1 }, { "ElementMin", 1 }, { "ElementMax", 1 },
-    { "ElementNumberOfChannels", 1 }, { "ElementNBits", 1 },
-    { "ElementToIntensityFunctionSlope", 1 }, { "ElementToIntensityFunctionOffset", 1 },
-    { "Color", 4 }, { "DimSize", 0 }, { "ElementSpacing", 0 }, { "ElementSize", 0 },
-    { "Offset", 0 }, { "Position", 0 }, { "Origin", 0 }, { "ImagePosition", 0 },
-    { "CenterOfRotation", 0 }, { "SequenceID", 0 }, { "ElementOrigin", 0 },
-    { "TransformMatrix", -1 }, { "Rotation", -1 }, { "Orientation", -1 },
+    { "HeaderSize", 1 }, { "ElementMin", 1 }, { "ElementMax", 1 }, { "ElementNumberOfChannels", 1 },
+    { "ElementNBits", 1 }, { "ElementToIntensityFunctionSlope", 1 },
+    { "ElementToIntensityFunctionOffset", 1 }, { "Color", 4 }, { "DimSize", 0 },
+    { "ElementSpacing", 0 }, { "ElementSize", 0 }, { "Offset", 0 }, { "Position", 0 },
+    { "Origin", 0 }, { "ImagePosition", 0 }, { "CenterOfRotation", 0 }, { "SequenceID", 0 },
+    { "ElementOrigin", 0 }, { "TransformMatrix", -1 }, { "Rotation", -1 }, { "Orientation", -1 },
     { "ElementDirection", -1 } };
   for (const auto& field : numericFields)
   {
@@ -174,7 +173,8 @@ HeaderCheck CheckMetaImageHeader(const std::string& headerPath)
     const std::vector<std::string> words = Split(fields[field.first]);
     double ignored = 0;
     if (words.size() != count ||
-      !std::all_of(words.begin(), words.end(), [&](const std::string& w) { return ParseReal(w, &ignored); }))
+      !std::all_of(
+        words.begin(), words.end(), [&](const std::string& w) { return ParseReal(w, &ignored); }))
     {
       problem = field.first + " " + Quote(fields[field.first]) + " is not " +
         std::to_string(count) + (count == 1 ? " number." : " numbers.");
@@ -230,7 +230,8 @@ HeaderCheck CheckMetaImageHeader(const std::string& headerPath)
   const auto type = types.find(typeName);
   if (typeName == "MET_LONG" || typeName == "MET_ULONG")
   {
-    problem = "ElementType " + typeName + ": MetaIO reads 4 bytes per value into VTK's 8-byte "
+    problem = "ElementType " + typeName +
+      ": MetaIO reads 4 bytes per value into VTK's 8-byte "
       "long array, leaving half the volume unread (write MET_INT or MET_UINT).";
     return check;
   }
@@ -256,13 +257,14 @@ HeaderCheck CheckMetaImageHeader(const std::string& headerPath)
   check.Layout.Components = static_cast<int>(channels);
 
   // The NDims numbers of a spacing or origin field.
-  auto vectorField = [&](const char* name, double* values) {
+  auto vectorField = [&](const char* name, double* values)
+  {
     if (ParseReals(Split(fields[name]), n, values))
     {
       return true;
     }
-    problem = std::string(name) + " " + Quote(fields[name]) + " is not " +
-      std::to_string(ndims) + " numbers.";
+    problem = std::string(name) + " " + Quote(fields[name]) + " is not " + std::to_string(ndims) +
+      " numbers.";
     return false;
   };
   // Spacing: ElementSpacing, else ElementSize (MetaIO copies it), else 1.
@@ -313,7 +315,8 @@ HeaderCheck CheckMetaImageHeader(const std::string& headerPath)
   }
 
   // How the data is stored, and where.
-  auto flag = [&](const char* name, bool fallback, bool* value) {
+  auto flag = [&](const char* name, bool fallback, bool* value)
+  {
     if (!has(name))
     {
       *value = fallback;
@@ -404,8 +407,9 @@ HeaderCheck CheckMetaImageHeader(const std::string& headerPath)
     if (binary && !compressed && fileBytes - dataStart < promised)
     {
       std::ostringstream msg;
-      msg << "truncated: " << dataName << " holds " << fileBytes << " bytes, fewer than HeaderSize ("
-          << headerSize << ") plus the " << promised << " bytes of voxel data the header promises.";
+      msg << "truncated: " << dataName << " holds " << fileBytes
+          << " bytes, fewer than HeaderSize (" << headerSize << ") plus the " << promised
+          << " bytes of voxel data the header promises.";
       problem = msg.str();
       return check;
     }
@@ -417,8 +421,8 @@ HeaderCheck CheckMetaImageHeader(const std::string& headerPath)
     {
       std::ostringstream msg;
       msg << "truncated: with HeaderSize = -1 the voxels are the last " << promised << " bytes of "
-          << dataName << ", but it holds only " << fileBytes - (dataPath == headerPath ? headerBytes : 0)
-          << " bytes of data.";
+          << dataName << ", but it holds only "
+          << fileBytes - (dataPath == headerPath ? headerBytes : 0) << " bytes of data.";
       problem = msg.str();
       return check;
     }
@@ -466,8 +470,8 @@ HeaderCheck CheckMetaImageHeader(const std::string& headerPath)
                 "(it is probably not compressed).";
       return check;
     }
-    problem = CheckCompressedFile(dataPath, dataStart, compressedBytes, promised, true,
-      "compressed data");
+    problem =
+      CheckCompressedFile(dataPath, dataStart, compressedBytes, promised, true, "compressed data");
     return check;
   }
   if (available < promised)

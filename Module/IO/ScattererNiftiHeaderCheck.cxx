@@ -87,7 +87,8 @@ HeaderCheck CheckNiftiHeader(const std::string& path)
   }
 
   // Byte order: the reader swaps when dim[0] is outside 0..7.
-  auto read = [&](int offset, int size, bool swap) {
+  auto read = [&](int offset, int size, bool swap)
+  {
     std::uint64_t v = 0;
     for (int i = 0; i < size; ++i)
     {
@@ -98,7 +99,8 @@ HeaderCheck CheckNiftiHeader(const std::string& path)
   };
   const int dimOffset = version == 2 ? 16 : 40;
   const int dimSize = version == 2 ? 8 : 2;
-  auto signedValue = [&](int offset, int size, bool swap) -> long long {
+  auto signedValue = [&](int offset, int size, bool swap) -> long long
+  {
     const std::uint64_t v = read(offset, size, swap);
     if (size == 2)
       return static_cast<std::int16_t>(v);
@@ -108,7 +110,8 @@ HeaderCheck CheckNiftiHeader(const std::string& path)
   };
   const long long dim0 = signedValue(dimOffset, dimSize, false);
   const bool swap = dim0 < 0 || dim0 > 7;
-  auto float32 = [&](int offset) {
+  auto float32 = [&](int offset)
+  {
     const auto bits = static_cast<std::uint32_t>(read(offset, 4, swap));
     float f = 0;
     std::memcpy(&f, &bits, 4);
@@ -134,8 +137,8 @@ HeaderCheck CheckNiftiHeader(const std::string& path)
     dims[i] = signedValue(dimOffset + dimSize * i, dimSize, swap);
     if (dims[i] < 1 || dims[i] > INT_MAX)
     {
-      problem = "dim[" + std::to_string(i) + "] is " + std::to_string(dims[i]) +
-        ", not a positive size.";
+      problem =
+        "dim[" + std::to_string(i) + "] is " + std::to_string(dims[i]) + ", not a positive size.";
       return check;
     }
     voxels = Times(voxels, dims[i]);
@@ -149,8 +152,8 @@ HeaderCheck CheckNiftiHeader(const std::string& path)
     int Components;
   };
   static const NiftiType types[] = { { 2, 8, 1 }, { 4, 16, 1 }, { 8, 32, 1 }, { 16, 32, 1 },
-    { 32, 64, 2 }, { 64, 64, 1 }, { 128, 24, 3 }, { 256, 8, 1 }, { 512, 16, 1 },
-    { 768, 32, 1 }, { 1024, 64, 1 }, { 1280, 64, 1 }, { 1792, 128, 2 }, { 2304, 32, 4 } };
+    { 32, 64, 2 }, { 64, 64, 1 }, { 128, 24, 3 }, { 256, 8, 1 }, { 512, 16, 1 }, { 768, 32, 1 },
+    { 1024, 64, 1 }, { 1280, 64, 1 }, { 1792, 128, 2 }, { 2304, 32, 4 } };
   const int typeOffset = version == 2 ? 12 : 70;
   const long long datatype = signedValue(typeOffset, 2, swap);
   const long long bitpix = signedValue(typeOffset + 2, 2, swap);
@@ -171,8 +174,8 @@ HeaderCheck CheckNiftiHeader(const std::string& path)
   }
   if (bitpix != type->Bits)
   {
-    problem = "bitpix is " + std::to_string(bitpix) + " but datatype " +
-      std::to_string(datatype) + " has " + std::to_string(type->Bits) + " bits per voxel.";
+    problem = "bitpix is " + std::to_string(bitpix) + " but datatype " + std::to_string(datatype) +
+      " has " + std::to_string(type->Bits) + " bits per voxel.";
     return check;
   }
   // A 5th axis holds values per voxel; a 4th (time) and the 6th and 7th are read as their

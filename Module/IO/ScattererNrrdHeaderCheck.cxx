@@ -51,8 +51,7 @@ HeaderCheck CheckNrrdHeader(const std::string& headerPath)
     { { "uchar", "unsigned char", "uint8", "uint8_t" }, 1, kAsciiUInt8 },
     { { "short", "short int", "signed short", "signed short int", "int16", "int16_t" }, 2,
       kAsciiInt16 },
-    { { "ushort", "unsigned short", "unsigned short int", "uint16", "uint16_t" }, 2,
-      kAsciiUInt16 },
+    { { "ushort", "unsigned short", "unsigned short int", "uint16", "uint16_t" }, 2, kAsciiUInt16 },
     { { "int", "signed int", "int32", "int32_t" }, 4, kAsciiInt32 },
     { { "uint", "unsigned int", "uint32", "uint32_t" }, 4, kAsciiUInt32 },
     { { "longlong", "long long", "long long int", "signed long long", "signed long long int",
@@ -91,7 +90,7 @@ HeaderCheck CheckNrrdHeader(const std::string& headerPath)
       problem = ComponentsProblem(sizes[0],
         "VTK's NRRD reader takes the first axis as values per voxel (it does for 4 axes, for "
         "at most 9 samples or for a 'none' direction), and its size " +
-        std::to_string(sizes[0]));
+          std::to_string(sizes[0]));
       return check;
     }
     check.Layout.Components = static_cast<int>(sizes[0]);
@@ -246,8 +245,8 @@ HeaderCheck CheckNrrdHeader(const std::string& headerPath)
       // vtkImageReader2 takes a detached file's last <voxel bytes> bytes as the data; for
       // a gzip file larger than the raw voxels that skips the start of the stream.
       std::ostringstream msg;
-      msg << "the gzip data file " << dataName << " (" << available
-          << " bytes) is larger than the " << promised
+      msg << "the gzip data file " << dataName << " (" << available << " bytes) is larger than the "
+          << promised
           << " bytes of voxels it holds; VTK's NRRD reader would skip its start (store these "
              "voxels raw).";
       problem = msg.str();

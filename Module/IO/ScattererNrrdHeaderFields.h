@@ -19,10 +19,10 @@ struct NrrdFields
   // "<name>: <value>" as written (vtkNrrdReader neither trims nor lowercases the name;
   // the value is trimmed). Key/value pairs ("<key>:=<value>") and comments are not here.
   std::map<std::string, std::string> Fields;
-  int Dimension = 0;             // the "dimension" field; 0 if there is none
-  std::vector<long long> Sizes;  // one per axis, each in [1, INT_MAX]
-  std::vector<double> Spacing;   // per axis, from spacings or space directions
-  bool SpacingIsDirections = false; // Spacing holds the lengths of space directions
+  int Dimension = 0;                    // the "dimension" field; 0 if there is none
+  std::vector<long long> Sizes;         // one per axis, each in [1, INT_MAX]
+  std::vector<double> Spacing;          // per axis, from spacings or space directions
+  bool SpacingIsDirections = false;     // Spacing holds the lengths of space directions
   double Origin[3] = { 0.0, 0.0, 0.0 }; // space origin, up to three numbers
 };
 

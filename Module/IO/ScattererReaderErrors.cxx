@@ -13,9 +13,8 @@ namespace scatterer_io
 ReaderErrorSink::ReaderErrorSink()
 {
   this->Command->SetClientData(this);
-  this->Command->SetCallback([](vtkObject*, unsigned long, void* client, void* call) {
-    static_cast<ReaderErrorSink*>(client)->Add(call ? static_cast<const char*>(call) : "");
-  });
+  this->Command->SetCallback([](vtkObject*, unsigned long, void* client, void* call)
+    { static_cast<ReaderErrorSink*>(client)->Add(call ? static_cast<const char*>(call) : ""); });
 }
 
 void ReaderErrorSink::Add(std::string text)

@@ -286,9 +286,10 @@ std::string CheckLayout(const VolumeLayout& layout, bool checkComponents)
     }
     if (s < 0)
     {
-      return axis + ", negative: vtkImageData needs a positive spacing, and taking its absolute "
-                    "value would silently mirror the axis (write a positive spacing; a flip belongs "
-                    "in the orientation).";
+      return axis +
+        ", negative: vtkImageData needs a positive spacing, and taking its absolute "
+        "value would silently mirror the axis (write a positive spacing; a flip belongs "
+        "in the orientation).";
     }
     if (s < kMinSpacing || s > kMaxSpacing)
     {

@@ -43,15 +43,15 @@ struct VolumeLayout
 struct HeaderCheck
 {
   std::string Problem;
-  VolumeLayout Layout; // meaningful only when Problem is empty
+  VolumeLayout Layout;  // meaningful only when Problem is empty
   std::string Encoding; // how the voxels are stored: "raw", "ascii", "gzip" or "zlib"
 };
 
 ///@{
 /** The limits the checks apply (docs/hard-cases.md, "Bad input"). */
-constexpr int kMaxComponents = 4; // what VTK's volume mappers render
-constexpr double kMinSpacing = 1e-12; // beyond these the single-precision renderer
-constexpr double kMaxSpacing = 1e12;  // loses the grid
+constexpr int kMaxComponents = 4;                   // what VTK's volume mappers render
+constexpr double kMinSpacing = 1e-12;               // beyond these the single-precision renderer
+constexpr double kMaxSpacing = 1e12;                // loses the grid
 constexpr double kMaxOriginInSpacings = 16777216.0; // 2^24: float resolves no finer
 constexpr std::size_t kInflateCheckBytes = std::size_t(1) << 20; // decoded to verify a stream
 ///@}

@@ -60,8 +60,8 @@ std::string PlaceInPatientSpace(const double matrix[16], const double origin[3],
       if (std::fabs(cosine) > kMaxAxisCosine)
       {
         std::ostringstream why;
-        why << "its orientation matrix is sheared: the " << AxisName(a) << " and "
-            << AxisName(b) << " axes meet at " << std::acos(cosine) * 180.0 / std::acos(-1.0)
+        why << "its orientation matrix is sheared: the " << AxisName(a) << " and " << AxisName(b)
+            << " axes meet at " << std::acos(cosine) * 180.0 / std::acos(-1.0)
             << " degrees, and a rotation (with or without a reflection) cannot place such a "
                "grid without distorting it; resample the volume onto a rectangular grid first.";
         return why.str();

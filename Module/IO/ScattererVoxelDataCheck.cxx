@@ -35,8 +35,8 @@ std::string CheckCompressed(const std::string& compressed, bool whole, long long
         << kMaxInflateRatio << ":1).";
     return msg.str();
   }
-  const std::size_t limit =
-    static_cast<std::size_t>(std::min<long long>(promised, static_cast<long long>(kInflateCheckBytes)));
+  const std::size_t limit = static_cast<std::size_t>(
+    std::min<long long>(promised, static_cast<long long>(kInflateCheckBytes)));
   const InflateResult r = Inflate(compressed, limit, allowZlib);
   std::ostringstream msg;
   switch (r.Status)
@@ -97,7 +97,8 @@ std::string CheckAsciiNumbers(const std::string& path, long long offset, long lo
   long long count = 0;
   // Tokens are read by hand so that a run of bytes without whitespace cannot grow one
   // without bound: no number the voxel types hold needs more than 64 characters.
-  auto next = [&]() {
+  auto next = [&]()
+  {
     token.clear();
     std::streambuf* buffer = in.rdbuf();
     int c = buffer->sbumpc();
@@ -105,7 +106,8 @@ std::string CheckAsciiNumbers(const std::string& path, long long offset, long lo
     {
       c = buffer->sbumpc();
     }
-    while (c != std::char_traits<char>::eof() && !IsSpace(static_cast<char>(c)) && token.size() <= 64)
+    while (
+      c != std::char_traits<char>::eof() && !IsSpace(static_cast<char>(c)) && token.size() <= 64)
     {
       token += static_cast<char>(c);
       c = buffer->sbumpc();

@@ -35,7 +35,8 @@ namespace
 {
 bool EndsWith(const std::string& s, const std::string& suffix)
 {
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+  return s.size() >= suffix.size() &&
+    s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 // A VTK file reader of type Reader, set to read path.
@@ -52,8 +53,8 @@ std::string Describe(const scatterer_io::VolumeLayout& layout)
   std::ostringstream out;
   out << layout.Dimensions[0] << "x" << layout.Dimensions[1] << "x" << layout.Dimensions[2]
       << " grid of " << layout.Components << "-component voxels, spacing (" << layout.Spacing[0]
-      << ", " << layout.Spacing[1] << ", " << layout.Spacing[2] << "), origin ("
-      << layout.Origin[0] << ", " << layout.Origin[1] << ", " << layout.Origin[2] << ")";
+      << ", " << layout.Spacing[1] << ", " << layout.Spacing[2] << "), origin (" << layout.Origin[0]
+      << ", " << layout.Origin[1] << ", " << layout.Origin[2] << ")";
   return out.str();
 }
 
@@ -104,8 +105,8 @@ std::string PlaceNifti(vtkNIFTIImageReader* reader, vtkImageData* image,
   if (sform)
   {
     CopyMatrix(reader->GetSFormMatrix(), matrix);
-    problem = scatterer_io::PlaceInPatientSpace(matrix, image->GetOrigin(), image->GetSpacing(),
-      scatterer_io::PatientFrame::RAS, placement);
+    problem = scatterer_io::PlaceInPatientSpace(
+      matrix, image->GetOrigin(), image->GetSpacing(), scatterer_io::PatientFrame::RAS, placement);
     if (problem.empty())
     {
       *oriented = true;
@@ -119,8 +120,8 @@ std::string PlaceNifti(vtkNIFTIImageReader* reader, vtkImageData* image,
   if (qform)
   {
     CopyMatrix(reader->GetQFormMatrix(), matrix);
-    problem = scatterer_io::PlaceInPatientSpace(matrix, image->GetOrigin(), image->GetSpacing(),
-      scatterer_io::PatientFrame::RAS, placement);
+    problem = scatterer_io::PlaceInPatientSpace(
+      matrix, image->GetOrigin(), image->GetSpacing(), scatterer_io::PatientFrame::RAS, placement);
     *oriented = problem.empty();
     return problem.empty() ? std::string() : "the qform: " + problem;
   }
@@ -172,8 +173,8 @@ bool vtkScattererVolumeReader::ReadIntoCache()
   }
   catch (const std::exception& e)
   {
-    this->Fail("Cannot read volume '" + path + "': reading failed with an exception (" +
-      e.what() + ").");
+    this->Fail(
+      "Cannot read volume '" + path + "': reading failed with an exception (" + e.what() + ").");
   }
   catch (...)
   {
@@ -203,8 +204,7 @@ bool vtkScattererVolumeReader::ReadChecked()
     EndsWith(lower, ".dicom"))
   {
     this->FormatName = "DICOM series";
-    auto dicom =
-      scatterer_io::OpenDicomSeries(path, [&sink](vtkAlgorithm* a) { sink.Watch(a); });
+    auto dicom = scatterer_io::OpenDicomSeries(path, [&sink](vtkAlgorithm* a) { sink.Watch(a); });
     reader = dicom.Reader;
     dicomProblem = dicom.Problem;
   }
@@ -302,8 +302,8 @@ bool vtkScattererVolumeReader::ReadChecked()
   }
   if (!scalars || scalars->GetNumberOfTuples() != points)
   {
-    this->Fail(failure +
-      "the voxel values are missing or fewer than the grid needs (truncated file?).");
+    this->Fail(
+      failure + "the voxel values are missing or fewer than the grid needs (truncated file?).");
     return false;
   }
 
@@ -381,12 +381,10 @@ int vtkScattererVolumeReader::RequestInformation(
     return 0;
   }
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  outInfo->Set(
-    vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), this->Cached->GetExtent(), 6);
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), this->Cached->GetExtent(), 6);
   outInfo->Set(vtkDataObject::SPACING(), this->Cached->GetSpacing(), 3);
   outInfo->Set(vtkDataObject::ORIGIN(), this->Cached->GetOrigin(), 3);
-  outInfo->Set(
-    vtkDataObject::DIRECTION(), this->Cached->GetDirectionMatrix()->GetData(), 9);
+  outInfo->Set(vtkDataObject::DIRECTION(), this->Cached->GetDirectionMatrix()->GetData(), 9);
   vtkDataArray* scalars = this->Cached->GetPointData()->GetScalars();
   vtkDataObject::SetPointDataActiveScalarInfo(
     outInfo, scalars->GetDataType(), scalars->GetNumberOfComponents());

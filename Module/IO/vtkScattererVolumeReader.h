@@ -1,6 +1,7 @@
 /**
  * @class   vtkScattererVolumeReader
- * @brief   Opens a volume by what its path is: MetaImage, NIfTI, VTK XML image, NRRD or a DICOM folder.
+ * @brief   Opens a volume by what its path is: MetaImage, NIfTI, VTK XML image, NRRD or a DICOM
+ * folder.
  *
  * The examples and benchmarks take any volume a user points them at. This
  * reader picks the VTK reader from the path (a directory is read as a DICOM

@@ -12,9 +12,8 @@ DecoratedVolumes::DecoratedVolumes(vtkAbstractVolumeMapper* owner)
   : Owner(owner)
 {
   this->Watcher->SetClientData(this);
-  this->Watcher->SetCallback([](vtkObject* caller, unsigned long, void* client, void*) {
-    static_cast<DecoratedVolumes*>(client)->Check(static_cast<vtkVolume*>(caller));
-  });
+  this->Watcher->SetCallback([](vtkObject* caller, unsigned long, void* client, void*)
+    { static_cast<DecoratedVolumes*>(client)->Check(static_cast<vtkVolume*>(caller)); });
 }
 
 DecoratedVolumes::~DecoratedVolumes()
@@ -38,7 +37,8 @@ void DecoratedVolumes::Watch(vtkVolume* volume)
       return;
     }
   }
-  this->Volumes.push_back({ volume, volume->AddObserver(vtkCommand::ModifiedEvent, this->Watcher) });
+  this->Volumes.push_back(
+    { volume, volume->AddObserver(vtkCommand::ModifiedEvent, this->Watcher) });
 }
 
 void DecoratedVolumes::Check(vtkVolume* volume)

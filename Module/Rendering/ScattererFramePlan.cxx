@@ -100,10 +100,10 @@ std::string FramePlanner::Plan(vtkRenderer* ren, vtkVolume* vol, const VolumeSou
     return unsupported;
   }
   plan.Image = vtkImageData::SafeDownCast(source.Input);
-  plan.Scalars = plan.Image ? vtkAbstractMapper::GetScalars(plan.Image, source.ScalarMode,
-                                source.ArrayAccessMode, source.ArrayId, source.ArrayName,
-                                plan.CellFlag)
-                            : nullptr;
+  plan.Scalars = plan.Image
+    ? vtkAbstractMapper::GetScalars(plan.Image, source.ScalarMode, source.ArrayAccessMode,
+        source.ArrayId, source.ArrayName, plan.CellFlag)
+    : nullptr;
   if (!plan.Scalars)
   {
     return "no scalars";
@@ -155,9 +155,10 @@ std::string FramePlanner::PlanGeometry(
       volumeMatrix->GetElement(1, c) * volumeMatrix->GetElement(1, c) +
       volumeMatrix->GetElement(2, c) * volumeMatrix->GetElement(2, c));
   }
-  const double meanSpacing = (std::abs(spacing[0]) * columnLength[0] +
-                               std::abs(spacing[1]) * columnLength[1] +
-                               std::abs(spacing[2]) * columnLength[2]) / 3.0;
+  const double meanSpacing =
+    (std::abs(spacing[0]) * columnLength[0] + std::abs(spacing[1]) * columnLength[1] +
+      std::abs(spacing[2]) * columnLength[2]) /
+    3.0;
   plan.Radius = parameters.TemplateRadius > 0.0 ? parameters.TemplateRadius : 10.0 * meanSpacing;
   if (!(plan.Radius > 0.0) || !std::isfinite(plan.Radius))
   {
@@ -199,8 +200,7 @@ std::string FramePlanner::PlanMaterials(vtkVolume* vol, const VolumeSource& sour
   const auto& requested = *requests.Materials;
   vtkVolumeProperty* materialProperty =
     this->MaterialProperty(property, source.Mask && source.LabelMapMask, derivation);
-  plan.Materials =
-    scatterer_scene::BuildMaterials(requested, materialProperty, range, derivation);
+  plan.Materials = scatterer_scene::BuildMaterials(requested, materialProperty, range, derivation);
   plan.MaterialsBuilt = true;
   if (plan.Materials.Materials.empty())
   {

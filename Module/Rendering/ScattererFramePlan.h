@@ -92,8 +92,8 @@ public:
     FramePlan& plan);
 
 private:
-  std::string PlanGeometry(vtkVolume* volume, const IlluminationParameters& parameters,
-    WarnOnce& warn, FramePlan& plan);
+  std::string PlanGeometry(
+    vtkVolume* volume, const IlluminationParameters& parameters, WarnOnce& warn, FramePlan& plan);
   std::string PlanMaterials(vtkVolume* volume, const VolumeSource& source,
     const IlluminationParameters& parameters, const PlanRequests& requests, WarnOnce& warn,
     FramePlan& plan);

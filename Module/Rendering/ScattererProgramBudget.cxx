@@ -23,7 +23,8 @@ using Recent = std::list<vtkWeakPointer<vtkShaderProgram>>;
 struct Registry
 {
   std::mutex Mutex;
-  std::map<vtkOpenGLRenderWindow*, std::pair<vtkWeakPointer<vtkOpenGLRenderWindow>, Recent>> Windows;
+  std::map<vtkOpenGLRenderWindow*, std::pair<vtkWeakPointer<vtkOpenGLRenderWindow>, Recent>>
+    Windows;
 };
 
 Registry& TheRegistry()
@@ -71,9 +72,8 @@ void NoteProgramUse(vtkOpenGLRenderWindow* window, vtkShaderProgram* program)
   {
     return;
   }
-  recent.remove_if([program](const vtkWeakPointer<vtkShaderProgram>& p) {
-    return p == nullptr || p == program;
-  });
+  recent.remove_if(
+    [program](const vtkWeakPointer<vtkShaderProgram>& p) { return p == nullptr || p == program; });
   recent.emplace_front(program);
   bool released = false;
   while (static_cast<int>(recent.size()) > kCompiledProgramsPerWindow)

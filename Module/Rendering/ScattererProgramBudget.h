@@ -19,7 +19,8 @@ class vtkShaderProgram;
 
 namespace scatterer_shader
 {
-/** Illumination programs a window keeps compiled (the rest are released, least recently used first). */
+/** Illumination programs a window keeps compiled (the rest are released, least recently used
+ * first). */
 constexpr int kCompiledProgramsPerWindow = 8;
 
 /**

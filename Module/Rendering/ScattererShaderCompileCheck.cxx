@@ -24,10 +24,12 @@ bool IsIlluminationProgram(vtkShaderProgram* program)
 ShaderCompileCheck::ShaderCompileCheck()
 {
   this->Catcher->SetClientData(&this->Errors);
-  this->Catcher->SetCallback([](vtkObject*, unsigned long, void* client, void* call) {
-    static_cast<std::vector<std::string>*>(client)->push_back(
-      call ? static_cast<const char*>(call) : "");
-  });
+  this->Catcher->SetCallback(
+    [](vtkObject*, unsigned long, void* client, void* call)
+    {
+      static_cast<std::vector<std::string>*>(client)->push_back(
+        call ? static_cast<const char*>(call) : "");
+    });
 }
 
 ShaderCompileCheck::~ShaderCompileCheck()

@@ -30,8 +30,9 @@ void NormalizeExtent(std::vector<std::vector<scatterer::Template>>& templates)
     {
       for (const auto& p : t.photons)
       {
-        reach = std::max(reach, std::sqrt(p.position.x * p.position.x +
-                                  p.position.y * p.position.y + p.position.z * p.position.z));
+        reach = std::max(reach,
+          std::sqrt(p.position.x * p.position.x + p.position.y * p.position.y +
+            p.position.z * p.position.z));
       }
     }
   }

@@ -62,7 +62,8 @@ public:
   /** The packed templates (photons normalised to the unit sphere, at most PhotonCap per row). */
   const scatterer::PackedTemplates& GetPacked() const { return this->Packed; }
 
-  /** Each material's templates as generated (photons in template radii), for the transport kernels. */
+  /** Each material's templates as generated (photons in template radii), for the transport kernels.
+   */
   const std::vector<std::vector<scatterer::Template>>& GetRawTemplates() const
   {
     return this->RawTemplates;

@@ -66,8 +66,10 @@ std::string TransportUpdate::Update(vtkRenderer* ren, vtkVolume* vol, const Fram
   const TransportSource& source, WarnOnce& warn, std::string& error)
 {
   vtkVolumeTexture* volumeTexture = source.VolumeTexture;
-  if (!volumeTexture || volumeTexture->GetPartitions()[0] * volumeTexture->GetPartitions()[1] *
-        volumeTexture->GetPartitions()[2] != 1)
+  if (!volumeTexture ||
+    volumeTexture->GetPartitions()[0] * volumeTexture->GetPartitions()[1] *
+        volumeTexture->GetPartitions()[2] !=
+      1)
   {
     warn("Scatterer-template illumination does not apply to a partitioned volume (one "
          "3D texture per block); this volume renders as vtkOpenGLGPUVolumeRayCastMapper would.");
@@ -124,8 +126,8 @@ std::string TransportUpdate::Update(vtkRenderer* ren, vtkVolume* vol, const Fram
   key << property->GetScalarOpacity(0)->GetMTime() << '|'
       << (gray ? property->GetGrayTransferFunction(0)->GetMTime()
                : property->GetRGBTransferFunction(0)->GetMTime())
-      << '|' << gray << '|' << lo << ',' << hi << '|' << unit << '|'
-      << templates.GetGenerationKey() << '|' << parameters.PhotonCap << '|' << plan.Radius;
+      << '|' << gray << '|' << lo << ',' << hi << '|' << unit << '|' << templates.GetGenerationKey()
+      << '|' << parameters.PhotonCap << '|' << plan.Radius;
   // A label-map mask adds one medium row per label: its transfer functions count too.
   key << '|' << plan.Features.LabelMask;
   if (plan.Features.LabelMask)
@@ -143,8 +145,8 @@ std::string TransportUpdate::Update(vtkRenderer* ren, vtkVolume* vol, const Fram
   {
     key << '|' << m.Physics.selector.lo << ',' << m.Physics.selector.hi << ','
         << m.Physics.selector.label << ',' << static_cast<int>(m.Physics.selector.kind) << ','
-        << m.OpacityPerUnit << ',' << m.Physics.refractiveIndex << ',' << m.Physics.diffuse.x
-        << ',' << m.Physics.diffuse.y << ',' << m.Physics.diffuse.z;
+        << m.OpacityPerUnit << ',' << m.Physics.refractiveIndex << ',' << m.Physics.diffuse.x << ','
+        << m.Physics.diffuse.y << ',' << m.Physics.diffuse.z;
   }
   if (this->Tables.Differs(key.Key()))
   {
@@ -200,8 +202,7 @@ void TransportUpdate::UpdateGeometry(vtkVolume* vol, const FramePlan& plan,
   vtkNew<vtkMatrix4x4> texToIndex, indexToDataset, texToDataset, texToWorld;
   int extent[6];
   plan.Image->GetExtent(extent);
-  const unsigned int texels[3] = { texture->GetWidth(), texture->GetHeight(),
-    texture->GetDepth() };
+  const unsigned int texels[3] = { texture->GetWidth(), texture->GetHeight(), texture->GetDepth() };
   for (int a = 0; a < 3; ++a)
   {
     texToIndex->SetElement(a, a, texels[a]);
@@ -226,9 +227,9 @@ void TransportUpdate::UpdateGeometry(vtkVolume* vol, const FramePlan& plan,
       double n[3], o[3];
       plane->GetNormal(n);
       plane->GetOrigin(o);
-      t.ClipPlanes.insert(t.ClipPlanes.end(), { static_cast<float>(n[0]),
-        static_cast<float>(n[1]), static_cast<float>(n[2]),
-        static_cast<float>(-(n[0] * o[0] + n[1] * o[1] + n[2] * o[2])) });
+      t.ClipPlanes.insert(t.ClipPlanes.end(),
+        { static_cast<float>(n[0]), static_cast<float>(n[1]), static_cast<float>(n[2]),
+          static_cast<float>(-(n[0] * o[0] + n[1] * o[1] + n[2] * o[2])) });
     }
   }
   t.Cropping = source.Cropping && !parameters.CroppedMatterCastsShadows;
@@ -311,8 +312,8 @@ void TransportUpdate::UpdateTables(vtkVolume* vol, const FramePlan& plan,
     std::vector<scatterer::KernelPhoton> kernel;
     if (m < raw.size())
     {
-      kernel = scatterer::mergedKernel(raw[m], t.KernelWidth,
-        scatterer::kernelRadius(material.Physics, sigma, 0.0, plan.Radius));
+      kernel = scatterer::mergedKernel(
+        raw[m], t.KernelWidth, scatterer::kernelRadius(material.Physics, sigma, 0.0, plan.Radius));
     }
     for (int k = 0; k < t.KernelWidth; ++k)
     {

@@ -80,8 +80,8 @@ private:
   void UpdateLights(const FramePlan& plan);
   /** The medium, material and kernel tables, over the volume texture's scalar range. */
   void UpdateTables(vtkVolume* volume, const FramePlan& plan,
-    const IlluminationParameters& parameters, const TemplateCache& templates, double lo,
-    double hi, double unit);
+    const IlluminationParameters& parameters, const TemplateCache& templates, double lo, double hi,
+    double unit);
 
   // The light transport volume (owns its textures and build key).
   vtkNew<vtkScattererTransportVolume> Transport;

@@ -137,8 +137,9 @@ void vtkScattererTemplateVolumeMapper::AddMaterialsFromLabelTransferFunctions(
   const std::set<int> labels = property->GetLabelMapLabels();
   if (labels.empty())
   {
-    vtkWarningMacro("AddMaterialsFromLabelTransferFunctions: the volume property has no label "
-                    "transfer functions (SetLabelColor / SetLabelScalarOpacity); no material added.");
+    vtkWarningMacro(
+      "AddMaterialsFromLabelTransferFunctions: the volume property has no label "
+      "transfer functions (SetLabelColor / SetLabelScalarOpacity); no material added.");
     return;
   }
   int index = 0;
@@ -199,8 +200,8 @@ void vtkScattererTemplateVolumeMapper::SetMaterialDerivationRange(double lo, dou
 {
   if (!std::isfinite(lo) || !std::isfinite(hi))
   {
-    vtkErrorMacro("SetMaterialDerivationRange(" << lo << ", " << hi
-                                               << "): the range must be finite; ignored.");
+    vtkErrorMacro(
+      "SetMaterialDerivationRange(" << lo << ", " << hi << "): the range must be finite; ignored.");
     return;
   }
   // No Modified(): the materials are re-derived every frame and the templates and
@@ -216,7 +217,8 @@ double vtkScattererTemplateVolumeMapper::GetIlluminationReach(const double spaci
     return 0.0;
   }
   const double sx = std::abs(spacing[0]), sy = std::abs(spacing[1]), sz = std::abs(spacing[2]);
-  const double radius = this->TemplateRadius > 0.0 ? this->TemplateRadius : 10.0 * (sx + sy + sz) / 3.0;
+  const double radius =
+    this->TemplateRadius > 0.0 ? this->TemplateRadius : 10.0 * (sx + sy + sz) / 3.0;
   // Per sample: photons lie within one radius; the thin-part check marches on toward
   // the light to LongRangeMultiple x the photon's offset. Transport: the kernel reaches
   // one radius, the ambient occlusion two diffusion voxels and the diffusion one such
@@ -295,7 +297,8 @@ void vtkScattererTemplateVolumeMapper::GPURender(vtkRenderer* ren, vtkVolume* vo
   std::string stock = this->PlanFrame(ren, vol, parameters, plan);
   if (stock.empty())
   {
-    stock = in.Templates.Update(plan.Materials.Materials, parameters,
+    stock = in.Templates.Update(
+      plan.Materials.Materials, parameters,
       [this](double done) { this->ReportProgress(done * kTemplatesDone); }, in.Warn);
   }
   if (stock.empty() && plan.Features.Transport)
@@ -385,9 +388,8 @@ std::string vtkScattererTemplateVolumeMapper::UpdateTransport(vtkRenderer* ren, 
   // representation): reporting makes the build wait for each GPU stage.
   if (this->HasObserver(vtkCommand::ProgressEvent))
   {
-    source.Progress = [this](double done) {
-      this->ReportProgress(kTemplatesDone + (kTransportDone - kTemplatesDone) * done);
-    };
+    source.Progress = [this](double done)
+    { this->ReportProgress(kTemplatesDone + (kTransportDone - kTemplatesDone) * done); };
   }
   std::string error;
   const std::string stock =
@@ -440,7 +442,8 @@ std::string vtkScattererTemplateVolumeMapper::RenderIlluminated(vtkRenderer* ren
     // The errors held back are the ray caster's terse report of the failure (the
     // compiler's own message went to the output window): replaced by this one.
     in.FailedShaders.Insert(plan.ShaderKey());
-    vtkErrorMacro("The scatterer-template illumination shader (" << plan.Features.Describe()
+    vtkErrorMacro("The scatterer-template illumination shader ("
+      << plan.Features.Describe()
       << ") failed to compile on this OpenGL implementation (the compiler's message is above); "
          "this volume renders as vtkOpenGLGPUVolumeRayCastMapper would.");
     return "the illumination shader failed to compile here";

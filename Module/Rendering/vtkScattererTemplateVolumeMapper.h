@@ -67,6 +67,8 @@
 #include <memory> // for Internals
 #include <string> // for GetLastShaderFeatures
 
+// The setting macros keep their hand layout (one-line accessor bodies).
+// clang-format off
 /**
  * Like vtkSetClampMacro, but without Modified() (see the class comment),
  * rejecting NaN with an error and warning when it clamps, naming the parameter.
@@ -114,6 +116,7 @@
   }                                                                                                \
   vtkGetMacro(name, bool);                                                                         \
   vtkBooleanMacro(name, bool)
+// clang-format on
 
 class vtkScattererTransportVolume;
 namespace scatterer_render
@@ -151,8 +154,10 @@ public:
 
   enum IlluminationModeType
   {
-    TRANSPORT = scatterer::illumination::Transport, ///< light transport volume built on the GPU, read by every sample (default)
-    PER_SAMPLE = scatterer::illumination::PerSample ///< the paper's local photon test in the fragment shader at every ray sample
+    TRANSPORT = scatterer::illumination::Transport, ///< light transport volume built on the GPU,
+                                                    ///< read by every sample (default)
+    PER_SAMPLE = scatterer::illumination::PerSample ///< the paper's local photon test in the
+                                                    ///< fragment shader at every ray sample
   };
   ///@{
   /**
@@ -229,7 +234,8 @@ public:
 
   enum ShaderPathSelectionType
   {
-    AUTOMATIC = scatterer::illumination::Automatic, ///< only the code paths the scene needs (default)
+    AUTOMATIC =
+      scatterer::illumination::Automatic, ///< only the code paths the scene needs (default)
     AS_REQUESTED = scatterer::illumination::AsRequested ///< every switched-on effect, needed or not
   };
   ///@{
@@ -330,8 +336,8 @@ public:
    * property's label maps (vtkVolumeProperty::GetLabelMapLabels), coloured by
    * the label's colour transfer function.
    */
-  void AddScalarRangeMaterial(double lo, double hi, double refractiveIndex, double r, double g,
-    double b);
+  void AddScalarRangeMaterial(
+    double lo, double hi, double refractiveIndex, double r, double g, double b);
   void AddLabelMaterial(int label, double refractiveIndex, double r, double g, double b);
   void AddMaterialsFromLabelTransferFunctions(vtkVolumeProperty* property);
   void RemoveAllMaterials();

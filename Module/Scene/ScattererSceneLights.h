@@ -15,18 +15,18 @@ namespace scatterer_scene
 {
 struct LightSet
 {
-  std::vector<float> Direction;  ///< 3 per light: unit vector toward a directional light
-  std::vector<float> Position;   ///< 3 per light: world position of a positional light
-  std::vector<int> Positional;   ///< 1 per light
-  std::vector<float> Color;      ///< 3 per light: kd * diffuse colour * intensity
+  std::vector<float> Direction;      ///< 3 per light: unit vector toward a directional light
+  std::vector<float> Position;       ///< 3 per light: world position of a positional light
+  std::vector<int> Positional;       ///< 1 per light
+  std::vector<float> Color;          ///< 3 per light: kd * diffuse colour * intensity
   std::vector<float> FocalDirection; ///< 3 per light: unit vector from the light to its focal point
   std::vector<float> Attenuation;    ///< 3 per light: VTK's (constant, linear, quadratic)
   std::vector<float> ConeCos;        ///< 1 per light: cos(cone angle) of a spot, -2 for none
   std::vector<float> Exponent;       ///< 1 per light: spot exponent
   std::vector<float> AmbientColor;   ///< 3 per light: ka * ambient colour * intensity
-  float Ambient[3] = { 0, 0, 0 }; ///< the sum of AmbientColor over the lights
+  float Ambient[3] = { 0, 0, 0 };    ///< the sum of AmbientColor over the lights
   bool AnyPositional = false;
-  int Skipped = 0;                ///< switched-on lights beyond the limit
+  int Skipped = 0; ///< switched-on lights beyond the limit
   int Count() const { return static_cast<int>(this->Positional.size()); }
 };
 

@@ -174,16 +174,16 @@ std::vector<float> PairTable(const MaterialSet& set, PairFunction f)
 
 std::vector<float> SpeedRatios(const MaterialSet& set)
 {
-  return PairTable(set, [](const scatterer::Material& a, const scatterer::Material& b) {
-    return scatterer::speedRatio(a.refractiveIndex, b.refractiveIndex);
-  });
+  return PairTable(set,
+    [](const scatterer::Material& a, const scatterer::Material& b)
+    { return scatterer::speedRatio(a.refractiveIndex, b.refractiveIndex); });
 }
 
 std::vector<float> OpacityRatios(const MaterialSet& set)
 {
-  return PairTable(set, [](const scatterer::Material& a, const scatterer::Material& b) {
-    return b.opacity > 0 ? std::min(1.0, a.opacity / b.opacity) : 1.0;
-  });
+  return PairTable(set,
+    [](const scatterer::Material& a, const scatterer::Material& b)
+    { return b.opacity > 0 ? std::min(1.0, a.opacity / b.opacity) : 1.0; });
 }
 
 std::vector<float> MaterialTable(const MaterialSet& set, const double range[2], int size)
@@ -228,7 +228,8 @@ Unassigned CountUnassigned(vtkDataArray* scalars, const MaterialSet& set,
       continue;
     }
     const int bin = span > 0.0
-      ? std::min(tableSize - 1, std::max(0, static_cast<int>(std::lround((v - lo) / span * (tableSize - 1)))))
+      ? std::min(tableSize - 1,
+          std::max(0, static_cast<int>(std::lround((v - lo) / span * (tableSize - 1)))))
       : 0;
     if (!visible[bin])
     {

@@ -167,8 +167,7 @@ void vtkScattererMaterial::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DiffuseColor: (" << this->DiffuseColor[0] << ", " << this->DiffuseColor[1]
      << ", " << this->DiffuseColor[2] << ")\n";
   os << indent << "SelectorType: " << this->GetSelectorTypeAsString() << "\n";
-  os << indent << "ScalarRange: [" << this->ScalarRange[0] << ", " << this->ScalarRange[1]
-     << "]\n";
+  os << indent << "ScalarRange: [" << this->ScalarRange[0] << ", " << this->ScalarRange[1] << "]\n";
   os << indent << "Label: " << this->Label << "\n";
 }
 

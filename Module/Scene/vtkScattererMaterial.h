@@ -1,6 +1,7 @@
 /**
  * @class   vtkScattererMaterial
- * @brief   One material of the scatterer-template model: opacity, refractive index, colour, and where it is in a volume.
+ * @brief   One material of the scatterer-template model: opacity, refractive index, colour, and
+ * where it is in a volume.
  *
  * The scatterer-template method (docs/model.md) precomputes photon templates per
  * material. This object holds what the generator and the mapper need to know

@@ -19,10 +19,13 @@
 #include <string>
 
 // The clamp ranges in the header are the core's limits.
-static_assert(scatterer::kMaxTemplatesPerMaterial == 1024, "update vtkSetClampMacro(TemplatesPerMaterial)");
+static_assert(
+  scatterer::kMaxTemplatesPerMaterial == 1024, "update vtkSetClampMacro(TemplatesPerMaterial)");
 static_assert(scatterer::kMaxInitialLights == 1024, "update vtkSetClampMacro(InitialLights)");
-static_assert(scatterer::kMaxPhotonsCap == (1 << 20), "update vtkSetClampMacro(MaxPhotonsPerTemplate)");
-static_assert(scatterer::kMaxEventsCap == (1 << 24), "update vtkSetClampMacro(MaxEventsPerTemplate)");
+static_assert(
+  scatterer::kMaxPhotonsCap == (1 << 20), "update vtkSetClampMacro(MaxPhotonsPerTemplate)");
+static_assert(
+  scatterer::kMaxEventsCap == (1 << 24), "update vtkSetClampMacro(MaxEventsPerTemplate)");
 
 vtkStandardNewMacro(vtkScattererTemplateSource);
 
@@ -135,8 +138,8 @@ bool SetClampedFraction(vtkObject* self, double value, double lo, double& member
 
 void vtkScattererTemplateSource::SetThreshold(double threshold)
 {
-  if (SetClampedFraction(this, threshold, kMinThreshold, this->Threshold, "SetThreshold",
-        "threshold", ""))
+  if (SetClampedFraction(
+        this, threshold, kMinThreshold, this->Threshold, "SetThreshold", "threshold", ""))
   {
     this->Modified();
   }
@@ -144,8 +147,8 @@ void vtkScattererTemplateSource::SetThreshold(double threshold)
 
 void vtkScattererTemplateSource::SetStepLength(double step)
 {
-  if (SetClampedFraction(this, step, kMinStep, this->StepLength, "SetStepLength", "step length",
-        " template radii"))
+  if (SetClampedFraction(
+        this, step, kMinStep, this->StepLength, "SetStepLength", "step length", " template radii"))
   {
     this->Modified();
   }
@@ -153,8 +156,8 @@ void vtkScattererTemplateSource::SetStepLength(double step)
 
 void vtkScattererTemplateSource::SetLatticeCell(double cell)
 {
-  if (SetClampedFraction(this, cell, kMinStep, this->LatticeCell, "SetLatticeCell",
-        "lattice cell", " template radii"))
+  if (SetClampedFraction(this, cell, kMinStep, this->LatticeCell, "SetLatticeCell", "lattice cell",
+        " template radii"))
   {
     this->Modified();
   }
@@ -211,9 +214,8 @@ bool vtkScattererTemplateSource::UpdateTemplates()
   if (internals.Valid && scatterer_vtk::SameSettings(internals.Set.settings, settings) &&
     internals.Set.materials.size() == materials.size() &&
     std::equal(materials.begin(), materials.end(), internals.Set.materials.begin(),
-      [](const scatterer::Material& a, const scatterer::MaterialTemplates& b) {
-        return scatterer_vtk::SamePhysics(a, b.material);
-      }))
+      [](const scatterer::Material& a, const scatterer::MaterialTemplates& b)
+      { return scatterer_vtk::SamePhysics(a, b.material); }))
   {
     return true;
   }
@@ -240,8 +242,7 @@ bool vtkScattererTemplateSource::UpdateTemplates()
     }
     catch (const std::exception& e)
     {
-      vtkErrorMacro(<< "Cannot generate templates: material " << m << " is invalid: "
-                    << e.what());
+      vtkErrorMacro(<< "Cannot generate templates: material " << m << " is invalid: " << e.what());
       return false;
     }
   }

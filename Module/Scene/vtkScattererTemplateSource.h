@@ -77,7 +77,8 @@ public:
   ///@}
 
   ///@{
-  /** L: the initial energy 1 is split across L lights (paper Table 2). Clamped to [1, 1024]; default 4. */
+  /** L: the initial energy 1 is split across L lights (paper Table 2). Clamped to [1, 1024];
+   * default 4. */
   vtkSetClampMacro(InitialLights, int, 1, 1024);
   vtkGetMacro(InitialLights, int);
   ///@}

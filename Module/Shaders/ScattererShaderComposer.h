@@ -27,8 +27,8 @@ struct SCATTERERTEMPLATE_EXPORT Features
   bool Positional = false; ///< some light is positional
   bool Blend2 = false;     ///< average two templates per sample
   bool Phong = false;      ///< keep VTK's gradient shading, darkened by the visibility
-  bool Transport = true;   ///< read the light transport volume instead of the per-sample photon loop
-  bool LabelMask = false;  ///< colour from VTK's label-map mask (its per-label transfer functions)
+  bool Transport = true;  ///< read the light transport volume instead of the per-sample photon loop
+  bool LabelMask = false; ///< colour from VTK's label-map mask (its per-label transfer functions)
 
   bool operator==(const Features& o) const;
   bool operator!=(const Features& o) const { return !(*this == o); }
@@ -41,8 +41,8 @@ struct SCATTERERTEMPLATE_EXPORT Features
  * @p flags (a missing name counts as false) and replaces `@NAME@` by
  * @p values. Throws std::runtime_error on unbalanced markers.
  */
-SCATTERERTEMPLATE_EXPORT std::string Preprocess(const std::string& text, const std::map<std::string, bool>& flags,
-  const std::map<std::string, std::string>& values);
+SCATTERERTEMPLATE_EXPORT std::string Preprocess(const std::string& text,
+  const std::map<std::string, bool>& flags, const std::map<std::string, std::string>& values);
 
 /**
  * Light slots of the per-sample shader: the light count rounded up to 1, 2, 4 or

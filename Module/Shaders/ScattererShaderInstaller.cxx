@@ -130,7 +130,8 @@ void SetIlluminationUniforms(
   {
     used.push_back(sampler.Name);
   }
-  auto name = [&used](const char* uniform) {
+  auto name = [&used](const char* uniform)
+  {
     used.emplace_back(uniform);
     return uniform;
   };
@@ -153,7 +154,8 @@ void SetIlluminationUniforms(
   const scatterer_scene::LightSet& lights = *v.Lights;
   const int nl = lights.Count();
   constexpr int ml = scatterer_scene::kMaxLights;
-  auto padded = [](const auto& values, size_t size) {
+  auto padded = [](const auto& values, size_t size)
+  {
     std::vector<typename std::decay_t<decltype(values)>::value_type> out(size);
     std::copy_n(values.begin(), std::min(size, values.size()), out.begin());
     return out;

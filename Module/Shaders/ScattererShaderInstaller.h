@@ -36,7 +36,7 @@ struct UniformValues
   float ToTex[3][3] = {};
   float TransportScale[3] = { 1, 1, 1 }; ///< transport mode: volume -> light texture coordinates
   float TransportOffset[3] = { 0, 0, 0 };
-  float IndexOrigin[3] = { 0, 0, 0 };   ///< extent index of the first voxel (template hash)
+  float IndexOrigin[3] = { 0, 0, 0 }; ///< extent index of the first voxel (template hash)
   const scatterer_scene::LightSet* Lights = nullptr;
   std::vector<float> MaterialRanges; ///< 2 per material
   std::vector<float> MaterialColors; ///< 3 per material
@@ -56,8 +56,7 @@ struct Sampler
  * retypes the @p samplers' int uniforms (vtkUniforms has no sampler type).
  */
 void InstallIllumination(vtkVolume* volume, const std::string& declarations,
-  const std::string& shadingInit, const std::string& shading,
-  const std::vector<Sampler>& samplers);
+  const std::string& shadingInit, const std::string& shading, const std::vector<Sampler>& samplers);
 
 /**
  * Sets every st_* value uniform (values only, so no shader rebuild unless sizes

@@ -35,8 +35,8 @@
 
 #include <functional> // for the progress callback
 #include <memory>     // for Internals
-#include <string> // for Inputs
-#include <vector> // for Inputs
+#include <string>     // for Inputs
+#include <vector>     // for Inputs
 
 class vtkOpenGLRenderWindow;
 class vtkTextureObject;
@@ -52,21 +52,21 @@ public:
   /** One light as the transport sees it (world coordinates). */
   struct Light
   {
-    float Toward[3] = { 0, 0, 1 };      ///< directional: unit vector toward the light
-    float Position[3] = { 0, 0, 0 };    ///< positional: position
+    float Toward[3] = { 0, 0, 1 };   ///< directional: unit vector toward the light
+    float Position[3] = { 0, 0, 0 }; ///< positional: position
     bool Positional = false;
-    float Color[3] = { 1, 1, 1 };       ///< irradiance: kd x diffuse colour x intensity
-    float Ambient[3] = { 0, 0, 0 };     ///< VTK's ambient term: ka x ambient colour x intensity
+    float Color[3] = { 1, 1, 1 };           ///< irradiance: kd x diffuse colour x intensity
+    float Ambient[3] = { 0, 0, 0 };         ///< VTK's ambient term: ka x ambient colour x intensity
     float FocalDirection[3] = { 0, 0, -1 }; ///< positional: unit vector light -> focal point
-    float Attenuation[3] = { 1, 0, 0 }; ///< positional: 1 / (a0 + a1 d + a2 d^2)
-    float ConeCos = -2.0f;              ///< positional spot: cos(cone angle); < -1: none
-    float Exponent = 1.0f;              ///< positional spot exponent
+    float Attenuation[3] = { 1, 0, 0 };     ///< positional: 1 / (a0 + a1 d + a2 d^2)
+    float ConeCos = -2.0f;                  ///< positional spot: cos(cone angle); < -1: none
+    float Exponent = 1.0f;                  ///< positional spot exponent
   };
 
   /** Everything one build needs; filled by the mapper every frame. */
   struct Inputs
   {
-    vtkTextureObject* Volume = nullptr; ///< the ray caster's scalar texture (3D)
+    vtkTextureObject* Volume = nullptr;    ///< the ray caster's scalar texture (3D)
     float ScalarScale = 1, ScalarBias = 0; ///< texel -> normalised scalar
     unsigned long VolumeUploadTime = 0;    ///< changes when the texture's content does
     /// A binary mask on the volume's grid (R, nearest; VTK's convention: a voxel whose
@@ -91,8 +91,9 @@ public:
     bool Cropping = false;
     int CropFlags = 0;
     float CropMin[3] = { 0, 0, 0 }, CropMax[3] = { 0, 0, 0 }; ///< dataset coordinates
-    int Downsample = 2;            ///< volume voxels per transport voxel along each axis
-    int IndexOrigin[3] = { 0, 0, 0 }; ///< structured index of the texture's first texel (extent start)
+    int Downsample = 2; ///< volume voxels per transport voxel along each axis
+    int IndexOrigin[3] = { 0, 0,
+      0 }; ///< structured index of the texture's first texel (extent start)
     std::vector<Light> Lights;
     /// Changes whenever Medium, MaterialTable, MaterialColors, SpeedRatios,
     /// OpacityRatios, Kernels or KernelWidth change: the change key reads it instead of
@@ -105,12 +106,12 @@ public:
     std::vector<float> MaterialColors; ///< 3 per material
     std::vector<float> SpeedRatios;
     std::vector<float> OpacityRatios;
-    std::vector<float> Kernels;        ///< per material KernelWidth x (offset xyz, weight)
+    std::vector<float> Kernels; ///< per material KernelWidth x (offset xyz, weight)
     int KernelWidth = 0;
     bool Bleed = true;
     bool Boundary = true;
-    float MultipleScattering = 1;      ///< strength of the multiple-scattering term (0: none)
-    int DiffusionIterations = 8;       ///< Jacobi iterations of the diffusion solve
+    float MultipleScattering = 1; ///< strength of the multiple-scattering term (0: none)
+    int DiffusionIterations = 8;  ///< Jacobi iterations of the diffusion solve
   };
 
   /**
@@ -138,7 +139,8 @@ public:
   /** Rebuilds so far (for tests and benchmarks). */
   int GetBuildCount() const;
 
-  /** GPU bytes held: the light and source textures, the transmittance, the slices, the diffusion grids. */
+  /** GPU bytes held: the light and source textures, the transmittance, the slices, the diffusion
+   * grids. */
   size_t GetGPUBytes() const;
 
   /**

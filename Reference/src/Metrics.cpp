@@ -5,8 +5,10 @@
 #include <limits>
 #include <stdexcept>
 
-namespace scatterer_reference {
-namespace {
+namespace scatterer_reference
+{
+namespace
+{
 void checkSizes(const std::vector<float>& a, const std::vector<float>& b, int width, int height)
 {
   if (width <= 0 || height <= 0 || a.size() != b.size() ||
@@ -57,7 +59,8 @@ double psnr(double e, double peak)
   return 20.0 * std::log10(std::max(peak, 1e-12) / e);
 }
 
-double ssim(const std::vector<float>& a, const std::vector<float>& b, int width, int height, double scaleA)
+double ssim(
+  const std::vector<float>& a, const std::vector<float>& b, int width, int height, double scaleA)
 {
   checkSizes(a, b, width, height);
   const std::vector<double> x = lum(a, scaleA, true), y = lum(b, 1.0, true);
@@ -67,7 +70,8 @@ double ssim(const std::vector<float>& a, const std::vector<float>& b, int width,
   for (int i = -R; i <= R; ++i)
     wsum += (w[i + R] = std::exp(-(i * i) / (2.0 * 1.5 * 1.5)));
   const double C1 = 0.01 * 0.01, C2 = 0.03 * 0.03;
-  auto window = [&](int cx, int cy, int x0, int x1, int y0, int y1) {
+  auto window = [&](int cx, int cy, int x0, int x1, int y0, int y1)
+  {
     double sw = 0, mx = 0, my = 0, sxx = 0, syy = 0, sxy = 0;
     for (int j = y0; j <= y1; ++j)
       for (int i = x0; i <= x1; ++i)
@@ -89,8 +93,9 @@ double ssim(const std::vector<float>& a, const std::vector<float>& b, int width,
   };
   (void)wsum;
   if (width < 2 * R + 1 || height < 2 * R + 1)
-    return window(width / 2, height / 2, std::max(0, width / 2 - R), std::min(width - 1, width / 2 + R),
-      std::max(0, height / 2 - R), std::min(height - 1, height / 2 + R));
+    return window(width / 2, height / 2, std::max(0, width / 2 - R),
+      std::min(width - 1, width / 2 + R), std::max(0, height / 2 - R),
+      std::min(height - 1, height / 2 + R));
   double sum = 0.0;
   int count = 0;
   for (int cy = R; cy < height - R; ++cy)
@@ -102,8 +107,8 @@ double ssim(const std::vector<float>& a, const std::vector<float>& b, int width,
   return sum / count;
 }
 
-std::vector<float> errorMap(const std::vector<float>& a, const std::vector<float>& b, int width, int height,
-  double scaleA)
+std::vector<float> errorMap(
+  const std::vector<float>& a, const std::vector<float>& b, int width, int height, double scaleA)
 {
   checkSizes(a, b, width, height);
   const std::vector<double> x = lum(a, scaleA, false), y = lum(b, 1.0, false);
@@ -113,8 +118,8 @@ std::vector<float> errorMap(const std::vector<float>& a, const std::vector<float
   return e;
 }
 
-Metrics compare(const std::vector<float>& test, const std::vector<float>& reference, int width, int height,
-  Normalisation normalisation)
+Metrics compare(const std::vector<float>& test, const std::vector<float>& reference, int width,
+  int height, Normalisation normalisation)
 {
   checkSizes(test, reference, width, height);
   Metrics m;

@@ -8,13 +8,18 @@
 #include <stdexcept>
 #include <thread>
 
-namespace scatterer_reference {
-namespace {
+namespace scatterer_reference
+{
+namespace
+{
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // Exponential free path for rate `rate` from a uniform u in [0, 1).
-inline double freePath(double rate, float u) { return -std::log(1.0 - static_cast<double>(u)) / rate; }
+inline double freePath(double rate, float u)
+{
+  return -std::log(1.0 - static_cast<double>(u)) / rate;
+}
 
 double hgPhase(double cosTheta, double g)
 {
@@ -74,7 +79,8 @@ PathTracer::PathTracer(Scene scene, int macroCell)
   const TransferTable& tt = v.table;
   const int n = static_cast<int>(tt.sigmaT.size());
   const double span = tt.scalarMax > tt.scalarMin ? tt.scalarMax - tt.scalarMin : 1.0;
-  auto entry = [&](double s) { return std::clamp((s - tt.scalarMin) / span * (n - 1), 0.0, double(n - 1)); };
+  auto entry = [&](double s)
+  { return std::clamp((s - tt.scalarMin) / span * (n - 1), 0.0, double(n - 1)); };
   for (int mz = 0; mz < macroDims_.z; ++mz)
     for (int my = 0; my < macroDims_.y; ++my)
       for (int mx = 0; mx < macroDims_.x; ++mx)
@@ -99,8 +105,8 @@ PathTracer::PathTracer(Scene scene, int macroCell)
       }
 }
 
-void PathTracer::lookup(const glm::dvec3& p, float& sigma, glm::vec3* albedo,
-  glm::vec3* emission) const
+void PathTracer::lookup(
+  const glm::dvec3& p, float& sigma, glm::vec3* albedo, glm::vec3* emission) const
 {
   const Volume& v = scene_.volume;
   const glm::dvec3 g = (p - v.origin) / v.spacing;
@@ -178,12 +184,14 @@ bool PathTracer::boxInterval(const glm::dvec3& o, const glm::dvec3& d, double& t
   return t0 < t1;
 }
 
-namespace {
+namespace
+{
 // Amanatides-Woo walk over the macro cells between t0 and t1; calls f(tEnterCell, tLeaveCell,
 // majorant) in order until f returns true.
 template <class F>
-bool walkCells(const glm::dvec3& o, const glm::dvec3& d, double t0, double t1, const glm::dvec3& boxMin,
-  const glm::dvec3& cellSize, const glm::ivec3& dims, const std::vector<float>& maj, F&& f)
+bool walkCells(const glm::dvec3& o, const glm::dvec3& d, double t0, double t1,
+  const glm::dvec3& boxMin, const glm::dvec3& cellSize, const glm::ivec3& dims,
+  const std::vector<float>& maj, F&& f)
 {
   const double tMid = t0 + 1e-9 * (t1 - t0);
   const glm::dvec3 p = o + tMid * d;
@@ -192,7 +200,8 @@ bool walkCells(const glm::dvec3& o, const glm::dvec3& d, double t0, double t1, c
   glm::ivec3 step;
   for (int a = 0; a < 3; ++a)
   {
-    c[a] = std::clamp(static_cast<int>(std::floor((p[a] - boxMin[a]) / cellSize[a])), 0, dims[a] - 1);
+    c[a] =
+      std::clamp(static_cast<int>(std::floor((p[a] - boxMin[a]) / cellSize[a])), 0, dims[a] - 1);
     if (d[a] > 0)
     {
       step[a] = 1;
@@ -230,11 +239,12 @@ bool walkCells(const glm::dvec3& o, const glm::dvec3& d, double t0, double t1, c
 }
 }
 
-bool PathTracer::deltaTrack(const glm::dvec3& o, const glm::dvec3& d, double t0, double t1, Pcg32& rng,
-  double& tHit, glm::vec3* albedo) const
+bool PathTracer::deltaTrack(const glm::dvec3& o, const glm::dvec3& d, double t0, double t1,
+  Pcg32& rng, double& tHit, glm::vec3* albedo) const
 {
   return walkCells(o, d, t0, t1, boxMin_, macroSize_, macroDims_, majorant_,
-    [&](double ta, double tb, float m) {
+    [&](double ta, double tb, float m)
+    {
       if (m <= 0.0f)
         return false;
       double t = ta;
@@ -254,38 +264,41 @@ bool PathTracer::deltaTrack(const glm::dvec3& o, const glm::dvec3& d, double t0,
     });
 }
 
-double PathTracer::ratioTrack(const glm::dvec3& o, const glm::dvec3& d, double t0, double t1, Pcg32& rng) const
+double PathTracer::ratioTrack(
+  const glm::dvec3& o, const glm::dvec3& d, double t0, double t1, Pcg32& rng) const
 {
   double T = 1.0;
-  walkCells(o, d, t0, t1, boxMin_, macroSize_, macroDims_, majorant_, [&](double ta, double tb, float m) {
-    if (m <= 0.0f)
-      return false;
-    double t = ta;
-    for (;;)
+  walkCells(o, d, t0, t1, boxMin_, macroSize_, macroDims_, majorant_,
+    [&](double ta, double tb, float m)
     {
-      t += freePath(m, rng.uniform());
-      if (t >= tb)
+      if (m <= 0.0f)
         return false;
-      float s;
-      lookup(o + t * d, s, nullptr);
-      T *= std::max(0.0, 1.0 - double(s) / m);
-      if (T < 1e-4)
+      double t = ta;
+      for (;;)
       {
-        // Russian roulette on tiny transmittances (unbiased).
-        if (rng.uniform() < 0.5f)
+        t += freePath(m, rng.uniform());
+        if (t >= tb)
+          return false;
+        float s;
+        lookup(o + t * d, s, nullptr);
+        T *= std::max(0.0, 1.0 - double(s) / m);
+        if (T < 1e-4)
         {
-          T = 0.0;
-          return true;
+          // Russian roulette on tiny transmittances (unbiased).
+          if (rng.uniform() < 0.5f)
+          {
+            T = 0.0;
+            return true;
+          }
+          T *= 2.0;
         }
-        T *= 2.0;
       }
-    }
-  });
+    });
   return T;
 }
 
-double PathTracer::transmittance(const glm::dvec3& o, const glm::dvec3& d, double tMax, std::uint64_t seed,
-  std::uint64_t stream) const
+double PathTracer::transmittance(const glm::dvec3& o, const glm::dvec3& d, double tMax,
+  std::uint64_t seed, std::uint64_t stream) const
 {
   Pcg32 rng(seed, stream);
   double t0, t1;
@@ -297,8 +310,8 @@ double PathTracer::transmittance(const glm::dvec3& o, const glm::dvec3& d, doubl
   return ratioTrack(o, d, t0, t1, rng);
 }
 
-glm::dvec3 PathTracer::radiance(const glm::dvec3& origin, const glm::dvec3& dir, Pcg32& rng,
-  const RenderSettings& settings) const
+glm::dvec3 PathTracer::radiance(
+  const glm::dvec3& origin, const glm::dvec3& dir, Pcg32& rng, const RenderSettings& settings) const
 {
   glm::dvec3 L(0.0), beta(1.0);
   glm::dvec3 o = origin, d = dir;
@@ -394,7 +407,8 @@ RenderResult PathTracer::render(const RenderSettings& settings) const
   r.rgb.assign(npix * 3, 0.0f);
   r.standardError.assign(npix, 0.0f);
   std::atomic<int> nextRow{ 0 }, rowsDone{ 0 };
-  auto worker = [&]() {
+  auto worker = [&]()
+  {
     for (int y; (y = nextRow.fetch_add(1)) < c.height;)
     {
       for (int x = 0; x < c.width; ++x)
@@ -423,7 +437,8 @@ RenderResult PathTracer::render(const RenderSettings& settings) const
       rowsDone.fetch_add(1);
     }
   };
-  unsigned nThreads = settings.threads ? settings.threads : std::max(1u, std::thread::hardware_concurrency());
+  unsigned nThreads =
+    settings.threads ? settings.threads : std::max(1u, std::thread::hardware_concurrency());
   std::vector<std::thread> pool;
   for (unsigned i = 1; i < nThreads; ++i)
     pool.emplace_back(worker);

@@ -27,7 +27,8 @@ namespace scatterer_testing
 {
 namespace
 {
-vtkSmartPointer<vtkLight> DirectionalLight(double x, double y, double z, double r, double g, double b)
+vtkSmartPointer<vtkLight> DirectionalLight(
+  double x, double y, double z, double r, double g, double b)
 {
   auto light = vtkSmartPointer<vtkLight>::New();
   light->SetLightTypeToSceneLight();

@@ -144,7 +144,8 @@ int main(int argc, char* argv[])
   plane->SetOrigin(0.5 * dims, 0.5 * dims, 0.5 * dims);
   plane->SetNormal(-1.0, 0.3, 0.2);
 
-  auto render = [&](vtkGPUVolumeRayCastMapper* mapper) {
+  auto render = [&](vtkGPUVolumeRayCastMapper* mapper)
+  {
     mapper->SetInputData(image);
     mapper->SetBlendMode(c.BlendMode);
     mapper->AutoAdjustSampleDistancesOff();

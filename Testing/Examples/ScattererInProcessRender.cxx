@@ -35,8 +35,10 @@ std::vector<unsigned char> RenderRgb(vtkImageData* image, const SceneSetup& setu
   grab->SetInput(window);
   grab->SetInputBufferTypeToRGB();
   grab->Update();
-  auto* pixels = vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
-  std::vector<unsigned char> rgb(pixels->GetPointer(0), pixels->GetPointer(0) + pixels->GetNumberOfValues());
+  auto* pixels =
+    vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
+  std::vector<unsigned char> rgb(
+    pixels->GetPointer(0), pixels->GetPointer(0) + pixels->GetNumberOfValues());
   mapper->ReleaseGraphicsResources(window);
   window->RemoveRenderer(renderer);
   return rgb;

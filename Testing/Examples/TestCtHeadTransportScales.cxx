@@ -50,9 +50,12 @@ TEST(CtHeadTransportScales, CoarserTransportKeepsTheColours)
   std::string error;
   vtkSmartPointer<vtkImageData> image = se::ReadVolumeOrCtHead("", error);
   ASSERT_TRUE(image) << error;
-  auto render = [&](int scale) {
+  auto render = [&](int scale)
+  {
     return scatterer_testing::RenderRgb(image,
-      [&](vtkVolumeProperty* property, vtkRenderer* renderer, vtkScattererTemplateVolumeMapper* mapper) {
+      [&](vtkVolumeProperty* property, vtkRenderer* renderer,
+        vtkScattererTemplateVolumeMapper* mapper)
+      {
         se::ApplyCtHeadProperty(property);
         se::ApplyCtHeadCamera(renderer);
         se::ApplyCtHeadLight(renderer);

@@ -42,7 +42,8 @@
 #error "SCATTERER_VIEWER_EXE (path of scatterer-viewer) must be defined by the build"
 #endif
 #ifndef SCATTERER_SOURCE_DIR
-#error "SCATTERER_SOURCE_DIR (the source tree, for paths the help cites) must be defined by the build"
+#error                                                                                             \
+  "SCATTERER_SOURCE_DIR (the source tree, for paths the help cites) must be defined by the build"
 #endif
 
 namespace fs = std::filesystem;
@@ -128,8 +129,8 @@ protected:
     std::ofstream out(header);
     out << "ObjectType = Image\nNDims = 3\nDimSize = " << v.Dims[0] << " " << v.Dims[1] << " "
         << v.Dims[2] << "\nElementType = MET_FLOAT\nElementSpacing = " << v.Spacing
-        << "\nOffset = " << v.Origin << "\nElementByteOrderMSB = False\nElementDataFile = "
-        << name << ".raw\n";
+        << "\nOffset = " << v.Origin << "\nElementByteOrderMSB = False\nElementDataFile = " << name
+        << ".raw\n";
     out.close();
     WriteRaw(this->Dir / (name + ".raw"), v);
     return header.string();
@@ -140,9 +141,8 @@ protected:
   {
     const fs::path path = this->Dir / (name + ".nrrd");
     std::ofstream out(path, std::ios::binary);
-    out << "NRRD0004\ntype: float\ndimension: 3\nsizes: " << v.Dims[0] << " " << v.Dims[1]
-        << " " << v.Dims[2] << "\nspacings: " << v.Spacing
-        << "\nencoding: raw\nendian: little\n\n";
+    out << "NRRD0004\ntype: float\ndimension: 3\nsizes: " << v.Dims[0] << " " << v.Dims[1] << " "
+        << v.Dims[2] << "\nspacings: " << v.Spacing << "\nencoding: raw\nendian: little\n\n";
     out.close();
     WriteRaw(path, v);
     return path.string();
@@ -169,7 +169,7 @@ protected:
 
 struct Result
 {
-  int Status = -1; // exit status; 128 + signal when killed by one
+  int Status = -1;    // exit status; 128 + signal when killed by one
   std::string Output; // stdout and stderr together
 };
 
@@ -228,8 +228,8 @@ Result Render(const std::vector<std::string>& args)
 Result RenderFile(const std::string& input, const std::string& png,
   const std::string& mode = "template", const std::vector<std::string>& extra = {})
 {
-  std::vector<std::string> args = { "--input", input, "--size", "96x96", "--mode", mode,
-    "--output", png };
+  std::vector<std::string> args = { "--input", input, "--size", "96x96", "--mode", mode, "--output",
+    png };
   args.insert(args.end(), extra.begin(), extra.end());
   return Render(args);
 }
@@ -240,8 +240,8 @@ bool Contains(const std::string& text, const std::string& part)
 }
 
 /** Exit status 1, the file named, each of @p reasons in the message, no image written. */
-void ExpectRefused(const Result& r, const std::string& input, const std::vector<std::string>& reasons,
-  const std::string& png)
+void ExpectRefused(const Result& r, const std::string& input,
+  const std::vector<std::string>& reasons, const std::string& png)
 {
   EXPECT_EQ(r.Status, 1) << r.Output;
   EXPECT_TRUE(Contains(r.Output, input)) << "the message should name '" << input << "':\n"
@@ -517,8 +517,8 @@ TEST_F(Cli, PlainDecimalNumbersAreAccepted)
   const std::string input = this->WriteMetaImage("ball", Ball());
   const std::string png = this->Png("ball.png");
   const Result r = RenderFile(input, png, "template",
-    { "--illumination", "per-sample", "--threshold", "0", "--strength", "+0.5", "--radius",
-      "2.5e0", "--frames", "+1", "--photons", "08" });
+    { "--illumination", "per-sample", "--threshold", "0", "--strength", "+0.5", "--radius", "2.5e0",
+      "--frames", "+1", "--photons", "08" });
   EXPECT_EQ(r.Status, 0) << r.Output;
   EXPECT_GT(ReadPng(png).Lit, 400) << r.Output;
 }
@@ -527,8 +527,8 @@ TEST_F(Cli, HelpSaysWhichNumbersAreRefused)
 {
   const Result r = Render({ "--help" });
   EXPECT_EQ(r.Status, 0) << r.Output;
-  for (const char* part : { "plain decimal", "hexadecimal (0x10)", "inf, nan", "1e-320",
-         "Exit status" })
+  for (const char* part :
+    { "plain decimal", "hexadecimal (0x10)", "inf, nan", "1e-320", "Exit status" })
   {
     EXPECT_TRUE(Contains(r.Output, part)) << "--help should mention '" << part << "'";
   }
@@ -568,8 +568,8 @@ TEST_F(Cli, ViewerFailsOnAVtkErrorWhenWritingTheFrame)
   const std::string input = this->WriteMetaImage("too-long", Ramp(16384, 2, 2));
   const std::string png = this->Png("viewer-too-long.png");
   const Result r = RunProgram(SCATTERER_VIEWER_EXE,
-    { "--input", input, "--play-events", this->WriteDragRecording(), "--size", "96x96",
-      "--output", png });
+    { "--input", input, "--play-events", this->WriteDragRecording(), "--size", "96x96", "--output",
+      png });
   EXPECT_EQ(r.Status, 1) << r.Output;
   EXPECT_TRUE(Contains(r.Output, "VTK reported")) << r.Output;
   EXPECT_FALSE(fs::exists(png));
@@ -612,7 +612,8 @@ std::string ProgramName(const std::string& path)
 }
 
 /** Exit status 2, "<program>: " before the message, each of @p parts in it, the --help hint. */
-void ExpectUsageError(const Result& r, const std::string& program, const std::vector<std::string>& parts)
+void ExpectUsageError(
+  const Result& r, const std::string& program, const std::vector<std::string>& parts)
 {
   const std::string name = ProgramName(program);
   EXPECT_EQ(r.Status, 2) << name << ":\n" << r.Output;
@@ -653,7 +654,8 @@ TEST_F(Cli, ViewerPresetWindowLevelAndScreenshotKeys)
 {
   const std::string input = this->WriteMetaImage("ball", Ball());
   const fs::path events = this->Dir / "keys.log";
-  auto key = [](int code, const char* sym) {
+  auto key = [](int code, const char* sym)
+  {
     std::string k;
     for (const char* e : { "KeyPressEvent", "CharEvent", "KeyReleaseEvent" })
     {
@@ -682,7 +684,9 @@ TEST_F(Cli, ViewerPresetWindowLevelAndScreenshotKeys)
   ASSERT_NE(at, std::string::npos) << r.Output;
   double level = 0.0, window = 0.0;
   ASSERT_EQ(std::sscanf(r.Output.c_str() + at, "transfer function ct-head level %lf window x%lf",
-              &level, &window), 2) << r.Output;
+              &level, &window),
+    2)
+    << r.Output;
   const double range = 100.0; // the ball's values: 0..100 (about)
   EXPECT_NEAR(level, (0.02 + 0.02 + 12.0 / 96.0) * range, 0.05 * range) << r.Output;
   EXPECT_NEAR(window, 1.25 * std::exp(2.0 * -10.0 / 80.0), 0.05) << r.Output;
@@ -693,7 +697,8 @@ TEST_F(Cli, ViewerPresetWindowLevelAndScreenshotKeys)
 // An unknown preset is a usage error that lists the known ones, before any file is read.
 TEST_F(Cli, ViewerUnknownPresetIsAUsageError)
 {
-  const Result r = RunProgram(SCATTERER_VIEWER_EXE, { "--preset", "bones", "--input", "/nonexistent.mhd" });
+  const Result r =
+    RunProgram(SCATTERER_VIEWER_EXE, { "--preset", "bones", "--input", "/nonexistent.mhd" });
   EXPECT_EQ(r.Status, 2) << r.Output;
   EXPECT_TRUE(Contains(r.Output, "'bones'")) << r.Output;
   EXPECT_TRUE(Contains(r.Output, "ct-bone")) << r.Output;
@@ -713,7 +718,8 @@ TEST_F(Cli, ConflictingOptionsAreRefused)
   const std::string missing = (this->Dir / "missing.mhd").string();
   const std::string log = (this->Dir / "session.log").string();
   const Case cases[] = {
-    { SCATTERER_RENDER_EXE, { "--mode", "stock", "--photons", "8" }, { "--photons", "--mode stock" } },
+    { SCATTERER_RENDER_EXE, { "--mode", "stock", "--photons", "8" },
+      { "--photons", "--mode stock" } },
     { SCATTERER_RENDER_EXE, { "--mode=phong", "--illumination=per-sample" },
       { "--illumination", "--mode phong" } },
     { SCATTERER_RENDER_EXE, { "--interval", "4" }, { "--interval", "--illumination transport" } },
@@ -771,8 +777,9 @@ TEST_F(Cli, HelpExitsZeroAndListsTheExitStatuses)
     EXPECT_EQ(r.Status, 0) << r.Output;
     for (const char* part : { "Exit status: 0 ", "; 1 ", "; 2 a bad command line", "--opt=VALUE" })
     {
-      EXPECT_TRUE(Contains(r.Output, part)) << ProgramName(program) << " --help should say '"
-                                            << part << "':\n" << r.Output;
+      EXPECT_TRUE(Contains(r.Output, part))
+        << ProgramName(program) << " --help should say '" << part << "':\n"
+        << r.Output;
     }
   }
   EXPECT_TRUE(Contains(RunProgram(SCATTERER_VIEWER_EXE, { "--help" }).Output, "77 --test without"));
@@ -788,7 +795,8 @@ TEST_F(Cli, HelpCitesOnlyPathsTheUserHas)
     const Result r = RunProgram(program, { "--help" });
     std::vector<std::string> paths;
     std::string word;
-    const auto take = [&]() {
+    const auto take = [&]()
+    {
       while (!word.empty() && std::string("(),;:'\".").find(word.back()) != std::string::npos)
         word.pop_back();
       while (!word.empty() && std::string("(,;:'\"").find(word.front()) != std::string::npos)
@@ -796,7 +804,8 @@ TEST_F(Cli, HelpCitesOnlyPathsTheUserHas)
       const fs::path p(word);
       bool dotted = false;
       for (const auto& part : p)
-        dotted = dotted || (!part.empty() && part.string()[0] == '.' && part != "." && part != "..");
+        dotted =
+          dotted || (!part.empty() && part.string()[0] == '.' && part != "." && part != "..");
       if (word.find('/') != std::string::npos && word.rfind("--", 0) != 0 &&
         p.filename().has_extension() && (p.is_absolute() || !dotted))
         paths.push_back(word);
@@ -912,14 +921,15 @@ TEST(VolumeCheck, OpacityVisibleOverLooksInsideTheRangeOnly)
 // One version number (CMake/ScattererTemplateVersion.cmake) reaches every program.
 TEST(Version, EveryProgramPrintsTheOneVersion)
 {
-  const std::pair<const char*, const char*> programs[] = { { "scatterer-render",
-                                                            SCATTERER_RENDER_EXE },
-    { "scatterer-viewer", SCATTERER_VIEWER_EXE } };
+  const std::pair<const char*, const char*> programs[] = {
+    { "scatterer-render", SCATTERER_RENDER_EXE }, { "scatterer-viewer", SCATTERER_VIEWER_EXE }
+  };
   for (const auto& p : programs)
   {
     const Result r = RunProgram(p.second, { "--version" });
     EXPECT_EQ(r.Status, 0) << p.first;
-    EXPECT_EQ(r.Output.rfind(std::string(p.first) + " " + SCATTERER_EXPECTED_VERSION + " (VTK ", 0), 0u)
+    EXPECT_EQ(
+      r.Output.rfind(std::string(p.first) + " " + SCATTERER_EXPECTED_VERSION + " (VTK ", 0), 0u)
       << r.Output;
   }
 }

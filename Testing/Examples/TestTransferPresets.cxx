@@ -27,7 +27,8 @@ namespace se = scatterer_examples;
 
 namespace
 {
-/** A 32^3 volume: a fraction @p shareA of the voxels at @p a, the rest at @p b, plus a ramp of noise. */
+/** A 32^3 volume: a fraction @p shareA of the voxels at @p a, the rest at @p b, plus a ramp of
+ * noise. */
 vtkSmartPointer<vtkImageData> TwoClassVolume(short a, short b, double shareA)
 {
   auto image = vtkSmartPointer<vtkImageData>::New();
@@ -56,17 +57,19 @@ TEST(TransferPresets, OtsuSplitsTwoClassesBetweenThem)
 TEST(TransferPresets, QuantileCountsFromTheGivenValue)
 {
   const se::VolumeHistogram h(TwoClassVolume(0, 1000, 0.7));
-  EXPECT_LT(h.Quantile(0.5), 10.0);            // most voxels are near 0
-  EXPECT_GT(h.Quantile(0.5, 500.0), 990.0);    // above 500 only the 1000 class
+  EXPECT_LT(h.Quantile(0.5), 10.0);         // most voxels are near 0
+  EXPECT_GT(h.Quantile(0.5, 500.0), 990.0); // above 500 only the 1000 class
   EXPECT_NEAR(h.Quantile(0.9), 1000.0, 10.0);
 }
 
 TEST(TransferPresets, CtInHounsfieldUnitsGetsTheCtPresetAndOtherDataTheAutomaticOne)
 {
-  EXPECT_EQ(se::DefaultTransferPreset(se::VolumeHistogram(TwoClassVolume(-1024, 700, 0.5))), "ct-head");
+  EXPECT_EQ(
+    se::DefaultTransferPreset(se::VolumeHistogram(TwoClassVolume(-1024, 700, 0.5))), "ct-head");
   EXPECT_EQ(se::DefaultTransferPreset(se::VolumeHistogram(TwoClassVolume(0, 255, 0.5))), "auto");
   // No air: a CT-like range with hardly any voxel near -1000 HU is not taken for CT.
-  EXPECT_EQ(se::DefaultTransferPreset(se::VolumeHistogram(TwoClassVolume(-1024, 700, 0.01))), "auto");
+  EXPECT_EQ(
+    se::DefaultTransferPreset(se::VolumeHistogram(TwoClassVolume(-1024, 700, 0.01))), "auto");
 }
 
 TEST(TransferPresets, EveryPresetIsVisibleSomewhereAndAnUnknownNameListsTheKnownOnes)
@@ -94,7 +97,8 @@ TEST(TransferPresets, EveryPresetIsVisibleSomewhereAndAnUnknownNameListsTheKnown
 
 TEST(TransferPresets, WindowLevelMovesAndScalesAboutTheRampCentre)
 {
-  const se::TransferPoints points{ "test", { { 0, 0.0 }, { 100, 0.0 }, { 300, 0.8 }, { 1000, 0.8 } },
+  const se::TransferPoints points{ "test",
+    { { 0, 0.0 }, { 100, 0.0 }, { 300, 0.8 }, { 1000, 0.8 } },
     { { 0, 1, 0, 0 }, { 1000, 0, 0, 1 } } };
   EXPECT_DOUBLE_EQ(se::TransferCenter(points), 200.0);
   vtkNew<vtkVolumeProperty> property;
@@ -155,7 +159,9 @@ PictureStats RenderAutomatic(const std::string& path)
     return stats;
   }
   const std::vector<unsigned char> rgb = scatterer_testing::RenderRgb(image,
-    [&](vtkVolumeProperty* property, vtkRenderer* renderer, vtkScattererTemplateVolumeMapper* mapper) {
+    [&](
+      vtkVolumeProperty* property, vtkRenderer* renderer, vtkScattererTemplateVolumeMapper* mapper)
+    {
       mapper->SetBlendModeToComposite();
       se::ApplyAutoScene(image, property, renderer);
     });
@@ -174,7 +180,8 @@ PictureStats RenderAutomatic(const std::string& path)
   if (lit > 0.0)
   {
     stats.MeanLuminance = sum / lit;
-    stats.LuminanceSpread = std::sqrt(std::max(0.0, squares / lit - stats.MeanLuminance * stats.MeanLuminance));
+    stats.LuminanceSpread =
+      std::sqrt(std::max(0.0, squares / lit - stats.MeanLuminance * stats.MeanLuminance));
   }
   return stats;
 }
@@ -189,7 +196,8 @@ void ExpectStructure(const std::string& path)
 {
   if (!std::filesystem::exists(path))
   {
-    GTEST_SKIP() << path << " is missing (scripts/install-deps.sh and scripts/prepare-data.sh make it)";
+    GTEST_SKIP() << path
+                 << " is missing (scripts/install-deps.sh and scripts/prepare-data.sh make it)";
   }
   const PictureStats s = RenderAutomatic(path);
   EXPECT_GT(s.LitShare, 0.05) << path << ": hardly anything shows";

@@ -34,8 +34,7 @@ constexpr int kFuzzMaxEvents = 2048;
 constexpr int kFuzzMaxPhotons = 1024;
 constexpr int kFuzzMaxTemplates = 2;
 
-template <typename F>
-bool throwsInvalidArgument(F&& f)
+template <typename F> bool throwsInvalidArgument(F&& f)
 {
   try {
     f();
@@ -65,20 +64,21 @@ void checkTemplate(const Template& t, const GeneratorSettings& s)
   double sum = 0.0;
   for (std::size_t j = 0; j < t.photons.size(); ++j) {
     const Photon& p = t.photons[j];
-    FUZZ_CHECK(std::isfinite(p.position.x) && std::isfinite(p.position.y) &&
-        std::isfinite(p.position.z),
+    FUZZ_CHECK(
+      std::isfinite(p.position.x) && std::isfinite(p.position.y) && std::isfinite(p.position.z),
       "photon %zu position not finite", j);
     FUZZ_CHECK(std::isfinite(p.intensity) && p.intensity > 0.0f, "photon %zu intensity %.9g", j,
       static_cast<double>(p.intensity));
     const double r2 = double(p.position.x) * p.position.x + double(p.position.y) * p.position.y +
-      double(p.position.z) * p.position.z;
-    FUZZ_CHECK(r2 <= (1.0 + 1e-5) * (1.0 + 1e-5), "photon %zu outside the sphere (r^2 %.17g)", j, r2);
+                      double(p.position.z) * p.position.z;
+    FUZZ_CHECK(
+      r2 <= (1.0 + 1e-5) * (1.0 + 1e-5), "photon %zu outside the sphere (r^2 %.17g)", j, r2);
     FUZZ_CHECK(j == 0 || p.intensity <= t.photons[j - 1].intensity, "photons unsorted at %zu", j);
     sum += p.intensity;
   }
   // Photon intensities are the float-rounded per-cell sums that make up ledger.stored.
-  FUZZ_CHECK(std::fabs(sum - l.stored) <= 1e-6 * l.stored + 1e-30, "photons sum %.17g, stored %.17g",
-    sum, l.stored);
+  FUZZ_CHECK(std::fabs(sum - l.stored) <= 1e-6 * l.stored + 1e-30,
+    "photons sum %.17g, stored %.17g", sum, l.stored);
 }
 
 void checkPacked(const PackedTemplates& packed, const std::vector<std::vector<Template>>& all,
@@ -96,20 +96,21 @@ void checkPacked(const PackedTemplates& packed, const std::vector<std::vector<Te
     width = std::max<std::size_t>(width, 1);
   }
   FUZZ_CHECK(packed.format == format, "format");
-  FUZZ_CHECK(static_cast<std::size_t>(packed.height) == rows, "height %d, rows %zu", packed.height,
-    rows);
-  FUZZ_CHECK(static_cast<std::size_t>(packed.width) == width, "width %d, expected %zu", packed.width,
-    width);
+  FUZZ_CHECK(
+    static_cast<std::size_t>(packed.height) == rows, "height %d, rows %zu", packed.height, rows);
+  FUZZ_CHECK(
+    static_cast<std::size_t>(packed.width) == width, "width %d, expected %zu", packed.width, width);
   FUZZ_CHECK(packed.rgba.size() == width * rows * 4, "rgba size %zu", packed.rgba.size());
   FUZZ_CHECK(format == TexelFormat::RGBA32F ? packed.rgbaHalf.empty()
                                             : packed.rgbaHalf.size() == packed.rgba.size(),
     "rgbaHalf size %zu", packed.rgbaHalf.size());
   FUZZ_CHECK(packed.photonCount.size() == rows && packed.truncatedIntensity.size() == rows,
     "per-row arrays");
-  FUZZ_CHECK(packed.materialFirstRow.size() == all.size() && packed.materialRowCount.size() == all.size(),
+  FUZZ_CHECK(
+    packed.materialFirstRow.size() == all.size() && packed.materialRowCount.size() == all.size(),
     "per-material arrays");
-  FUZZ_CHECK(packed.byteCount() == width * rows * (format == TexelFormat::RGBA16F ? 8 : 16),
-    "byteCount");
+  FUZZ_CHECK(
+    packed.byteCount() == width * rows * (format == TexelFormat::RGBA16F ? 8 : 16), "byteCount");
 
   std::size_t row = 0;
   for (std::size_t m = 0; m < all.size(); ++m) {
@@ -118,7 +119,8 @@ void checkPacked(const PackedTemplates& packed, const std::vector<std::vector<Te
     for (const Template& t : all[m]) {
       const int count = packed.photonCount[row];
       const std::size_t kept = std::min(t.photons.size(), static_cast<std::size_t>(cap));
-      FUZZ_CHECK(count >= 0 && static_cast<std::size_t>(count) <= kept, "row %zu count %d", row, count);
+      FUZZ_CHECK(
+        count >= 0 && static_cast<std::size_t>(count) <= kept, "row %zu count %d", row, count);
       const double truncated = packed.truncatedIntensity[row];
       FUZZ_CHECK(std::isfinite(truncated) && truncated >= 0.0, "truncated %.17g", truncated);
       double packedSum = 0.0;
@@ -131,7 +133,8 @@ void checkPacked(const PackedTemplates& packed, const std::vector<std::vector<Te
           FUZZ_CHECK(texel[3] > 0.0f, "row %zu texel %zu has w <= 0 before photonCount", row, j);
           if (format == TexelFormat::RGBA32F) {
             const Photon& p = t.photons[j];
-            FUZZ_CHECK(fuzz::sameBits(texel[0], p.position.x) && fuzz::sameBits(texel[1], p.position.y) &&
+            FUZZ_CHECK(
+              fuzz::sameBits(texel[0], p.position.x) && fuzz::sameBits(texel[1], p.position.y) &&
                 fuzz::sameBits(texel[2], p.position.z) && fuzz::sameBits(texel[3], p.intensity),
               "row %zu texel %zu differs from the photon", row, j);
           }
@@ -144,7 +147,8 @@ void checkPacked(const PackedTemplates& packed, const std::vector<std::vector<Te
       }
       if (format == TexelFormat::RGBA32F) {
         // Every photon has intensity > 0, so in float format only the cap truncates.
-        FUZZ_CHECK(static_cast<std::size_t>(count) == kept, "row %zu count %d, kept %zu", row, count, kept);
+        FUZZ_CHECK(
+          static_cast<std::size_t>(count) == kept, "row %zu count %d, kept %zu", row, count, kept);
         double total = 0.0;
         for (const Photon& p : t.photons) {
           total += p.intensity;
@@ -218,9 +222,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // One template by index (negative indices must be refused).
   const bool singleValid = firstValid && settingsValid && in.templateIndex >= 0;
   Template single;
-  FUZZ_CHECK(throwsInvalidArgument([&] {
-    single = generateTemplate(first, s, in.templateIndex);
-  }) == !singleValid,
+  FUZZ_CHECK(throwsInvalidArgument(
+               [&] { single = generateTemplate(first, s, in.templateIndex); }) == !singleValid,
     "generateTemplate: invalid_argument iff invalid input (material %d settings %d index %d)",
     firstValid, settingsValid, in.templateIndex);
   if (singleValid) {
@@ -230,15 +233,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // All templates of all materials.
   const bool allValid = materialsValid && settingsValid;
   std::vector<std::vector<Template>> all;
-  FUZZ_CHECK(throwsInvalidArgument([&] { all = generateAllTemplates(in.materials, s); }) == !allValid,
+  FUZZ_CHECK(
+    throwsInvalidArgument([&] { all = generateAllTemplates(in.materials, s); }) == !allValid,
     "generateAllTemplates: invalid_argument iff invalid input");
   if (!allValid) {
     return 0;
   }
   FUZZ_CHECK(all.size() == in.materials.size(), "one template list per material");
   for (const auto& templates : all) {
-    FUZZ_CHECK(templates.size() == static_cast<std::size_t>(s.templatesPerMaterial),
-      "templatesPerMaterial");
+    FUZZ_CHECK(
+      templates.size() == static_cast<std::size_t>(s.templatesPerMaterial), "templatesPerMaterial");
     for (const Template& t : templates) {
       checkTemplate(t, s);
     }
@@ -257,7 +261,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const TexelFormat format = in.halfFormat ? TexelFormat::RGBA16F : TexelFormat::RGBA32F;
   const bool capValid = in.packCap >= 1 && in.packCap <= kMaxPackWidth;
   PackedTemplates packed;
-  FUZZ_CHECK(throwsInvalidArgument([&] { packed = packTemplates(all, in.packCap, format); }) == !capValid,
+  FUZZ_CHECK(
+    throwsInvalidArgument([&] { packed = packTemplates(all, in.packCap, format); }) == !capValid,
     "packTemplates: invalid_argument iff the cap %d is invalid", in.packCap);
   if (capValid) {
     checkPacked(packed, all, in.packCap, format);

@@ -68,14 +68,15 @@ void write(const std::string& path, const std::string& bytes)
 bool oneLineNaming(const std::string& message, const std::string& path)
 {
   return !message.empty() && message.find('\n') == std::string::npos &&
-    message.find("'" + path + "'") != std::string::npos;
+         message.find("'" + path + "'") != std::string::npos;
 }
 
 } // namespace
 
 extern "C" int LLVMFuzzerInitialize(int*, char***)
 {
-  std::string pattern = (std::filesystem::temp_directory_path() / "scatterer-fuzz-headers.XXXXXX").string();
+  std::string pattern =
+    (std::filesystem::temp_directory_path() / "scatterer-fuzz-headers.XXXXXX").string();
   FUZZ_CHECK(mkdtemp(&pattern[0]) != nullptr, "cannot create a folder under %s",
     std::filesystem::temp_directory_path().c_str());
   folder = pattern;
@@ -91,7 +92,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 {
   const fuzz::VolumeFiles files = fuzz::decodeVolumeInput(data, size);
   // Files of earlier inputs must not be found by this one's header.
-  for (const char* name : { "v.mha", "v.mhd", "v.nrrd", "v.nhdr", "v.nii", "v.nii.gz", "data.raw" }) {
+  for (const char* name :
+    { "v.mha", "v.mhd", "v.nrrd", "v.nhdr", "v.nii", "v.nii.gz", "data.raw" }) {
     std::filesystem::remove(folder + "/" + name);
   }
   const std::string path = folder + "/" + files.headerName;
@@ -102,17 +104,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
   scatterer_io::HeaderCheck check;
   switch (files.format) {
-    case fuzz::kMetaImageLocal:
-    case fuzz::kMetaImageDetached:
-      check = scatterer_io::CheckMetaImageHeader(path);
-      break;
-    case fuzz::kNrrdAttached:
-    case fuzz::kNrrdDetached:
-      check = scatterer_io::CheckNrrdHeader(path);
-      break;
-    default:
-      check = scatterer_io::CheckNiftiHeader(path);
-      break;
+  case fuzz::kMetaImageLocal:
+  case fuzz::kMetaImageDetached:
+    check = scatterer_io::CheckMetaImageHeader(path);
+    break;
+  case fuzz::kNrrdAttached:
+  case fuzz::kNrrdDetached:
+    check = scatterer_io::CheckNrrdHeader(path);
+    break;
+  default:
+    check = scatterer_io::CheckNiftiHeader(path);
+    break;
   }
   const bool accepted = check.Problem.empty();
   FUZZ_CHECK(accepted || check.Problem.find('\n') == std::string::npos, "multi-line problem: %s",
@@ -123,7 +125,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       scatterer_io::CheckLayout(l).c_str());
     // The fuzzer's memory limit, not the product's: a header may rightly promise a volume
     // larger than the 1 GiB libFuzzer allows (a raw file named by absolute path, say).
-    const double values = double(l.Dimensions[0]) * l.Dimensions[1] * l.Dimensions[2] * l.Components;
+    const double values =
+      double(l.Dimensions[0]) * l.Dimensions[1] * l.Dimensions[2] * l.Components;
     if (values > 16.0 * 1024 * 1024) {
       return 0;
     }
@@ -141,7 +144,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // The reason follows the first "': " (after the file's path), so header text quoted
     // later in a message cannot pose as this one.
     const std::size_t reason = error.find("': ");
-    FUZZ_CHECK(reason == std::string::npos || error.compare(reason + 3, 22, "VTK's reader delivered") != 0,
+    FUZZ_CHECK(
+      reason == std::string::npos || error.compare(reason + 3, 22, "VTK's reader delivered") != 0,
       "the check mispredicted VTK's reader: %s", error.c_str());
     return 0;
   }
@@ -152,8 +156,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   FUZZ_CHECK(scalars && scalars->GetNumberOfTuples() == image->GetNumberOfPoints(),
     "scalars do not cover the grid");
   for (int i = 0; i < 3; ++i) {
-    FUZZ_CHECK(dims[i] == check.Layout.Dimensions[i], "dimension %d: %d, predicted %d", i,
-      dims[i], check.Layout.Dimensions[i]);
+    FUZZ_CHECK(dims[i] == check.Layout.Dimensions[i], "dimension %d: %d, predicted %d", i, dims[i],
+      check.Layout.Dimensions[i]);
     const double s = image->GetSpacing()[i];
     FUZZ_CHECK(std::isfinite(s) && s > 0, "spacing %d is %g", i, s);
     FUZZ_CHECK(std::isfinite(image->GetOrigin()[i]), "origin %d is %g", i, image->GetOrigin()[i]);

@@ -108,7 +108,8 @@ public:
 void write(const std::string& path, const std::vector<std::uint8_t>& bytes)
 {
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  out.write(
+    reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
   if (!out) {
     std::fprintf(stderr, "cannot write %s\n", path.c_str());
     std::exit(1);
@@ -123,8 +124,9 @@ void writeGeneratorSeed(const std::string& path, const fuzz::GeneratorInput& in)
   fuzz::Bytes b(e.bytes.data(), e.bytes.size());
   const fuzz::GeneratorInput back = fuzz::decodeGeneratorInput(b);
   bool same = back.materials.size() == in.materials.size() &&
-    fuzz::sameSettings(back.settings, in.settings) && back.templateIndex == in.templateIndex &&
-    back.packCap == in.packCap && back.halfFormat == in.halfFormat && b.remaining() == 0;
+              fuzz::sameSettings(back.settings, in.settings) &&
+              back.templateIndex == in.templateIndex && back.packCap == in.packCap &&
+              back.halfFormat == in.halfFormat && b.remaining() == 0;
   for (std::size_t m = 0; same && m < in.materials.size(); ++m) {
     same = fuzz::sameMaterial(back.materials[m], in.materials[m]);
   }
@@ -205,8 +207,8 @@ void writeVolumeSeeds(const std::string& dir)
   writeVolumeSeed(dir + "mha-zlib", kMetaImageLocal,
     meta("CompressedData = True\nCompressedDataSize = 59\n", "LOCAL") +
       scatterer_testing::ZlibStored(shorts(24)));
-  writeVolumeSeed(dir + "mha-ascii", kMetaImageLocal,
-    meta("BinaryData = False\n", "LOCAL") + asciiShorts(24));
+  writeVolumeSeed(
+    dir + "mha-ascii", kMetaImageLocal, meta("BinaryData = False\n", "LOCAL") + asciiShorts(24));
   writeVolumeSeed(dir + "mhd-header-size-minus-1", kMetaImageDetached,
     meta("HeaderSize = -1\n", "data.raw"), "0123456789abcdef" + shorts(24));
   writeVolumeSeed(dir + "issue-mha-negative-channels", kMetaImageLocal,
@@ -224,7 +226,8 @@ void writeVolumeSeeds(const std::string& dir)
       scatterer_testing::GzipStored(shorts(40)));
   writeVolumeSeed(dir + "nrrd-rgb", kNrrdAttached,
     "NRRD0005\ntype: uchar\ndimension: 4\nsizes: 3 10 2 2\nkinds: RGB-color domain domain domain\n"
-    "spacings: nan 1 1 1\nencoding: raw\n\n" + std::string(120, '\x7f'));
+    "spacings: nan 1 1 1\nencoding: raw\n\n" +
+      std::string(120, '\x7f'));
   writeVolumeSeed(dir + "nhdr-ascii", kNrrdDetached,
     "NRRD0004\ntype: short\ndimension: 3\nsizes: 10 2 2\nencoding: ascii\ndata file: data.raw\n",
     asciiShorts(40));
@@ -240,7 +243,8 @@ void writeVolumeSeeds(const std::string& dir)
   writeVolumeSeed(dir + "nii2", kNifti,
     scatterer_testing::Nifti2Header({ 4, 3, 2 }, { 0.8, 0.8, 2.5 }) + shorts(24));
   writeVolumeSeed(dir + "nii-gz", kNiftiGzipped, nifti1(16, 32) + shorts(48));
-  writeVolumeSeed(dir + "nii-gz-raw", kNiftiGzipRaw, scatterer_testing::GzipStored(nifti1(4, 16) + shorts(24)));
+  writeVolumeSeed(
+    dir + "nii-gz-raw", kNiftiGzipRaw, scatterer_testing::GzipStored(nifti1(4, 16) + shorts(24)));
   writeVolumeSeed(dir + "issue-nii-datatype-999", kNifti, nifti1(999, 16) + shorts(24));
 }
 
@@ -306,7 +310,8 @@ int main(int argc, char** argv)
   s.maxEventsPerTemplate = 256;
   TemplateSet one;
   one.settings = s;
-  one.materials.push_back({ material("skin", 0.5, 1.4), generateTemplates(material("skin", 0.5, 1.4), s) });
+  one.materials.push_back(
+    { material("skin", 0.5, 1.4), generateTemplates(material("skin", 0.5, 1.4), s) });
   const std::vector<std::uint8_t> oneBytes = serialize(one);
   write(rd + "one-material", oneBytes);
 
@@ -316,7 +321,8 @@ int main(int argc, char** argv)
   s2.maxPhotonsPerTemplate = 3;
   TemplateSet two;
   two.settings = s2;
-  two.materials.push_back({ material("air", 0.0, 1.0), generateTemplates(material("air", 0.0, 1.0), s2) });
+  two.materials.push_back(
+    { material("air", 0.0, 1.0), generateTemplates(material("air", 0.0, 1.0), s2) });
   Material bone = material("bone", 1.0, 1.55);
   bone.selector = Selector::labelId(7);
   two.materials.push_back({ bone, generateTemplates(bone, s2) });

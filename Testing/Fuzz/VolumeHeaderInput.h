@@ -36,7 +36,7 @@ struct VolumeFiles {
   std::string headerName; // file name of the header (or only) file
   std::string header;     // its bytes
   bool detached = false;
-  std::string data;       // data.raw, when detached
+  std::string data; // data.raw, when detached
 };
 
 inline VolumeFiles decodeVolumeInput(const std::uint8_t* bytes, std::size_t size)
@@ -48,13 +48,14 @@ inline VolumeFiles decodeVolumeInput(const std::uint8_t* bytes, std::size_t size
   }
   files.format = static_cast<VolumeFormat>(bytes[0] % kVolumeFormats);
   const std::string rest(reinterpret_cast<const char*>(bytes + 1), size - 1);
-  static const char* const names[kVolumeFormats] = { "v.mha", "v.mhd", "v.nrrd", "v.nhdr",
-    "v.nii", "v.nii.gz", "v.nii.gz" };
+  static const char* const names[kVolumeFormats] = { "v.mha", "v.mhd", "v.nrrd", "v.nhdr", "v.nii",
+    "v.nii.gz", "v.nii.gz" };
   files.headerName = names[files.format];
   files.detached = files.format == kMetaImageDetached || files.format == kNrrdDetached;
   if (files.detached) {
-    const std::size_t length =
-      rest.size() < 2 ? 0 : static_cast<std::uint8_t>(rest[0]) | (static_cast<std::uint8_t>(rest[1]) << 8);
+    const std::size_t length = rest.size() < 2 ? 0
+                                               : static_cast<std::uint8_t>(rest[0]) |
+                                                   (static_cast<std::uint8_t>(rest[1]) << 8);
     const std::string body = rest.size() < 2 ? std::string() : rest.substr(2);
     files.header = body.substr(0, length < body.size() ? length : body.size());
     files.data = body.substr(files.header.size());
@@ -66,8 +67,8 @@ inline VolumeFiles decodeVolumeInput(const std::uint8_t* bytes, std::size_t size
   return files;
 }
 
-inline std::string encodeVolumeInput(VolumeFormat format, const std::string& header,
-  const std::string& data = std::string())
+inline std::string encodeVolumeInput(
+  VolumeFormat format, const std::string& header, const std::string& data = std::string())
 {
   std::string out(1, static_cast<char>(format));
   if (format == kMetaImageDetached || format == kNrrdDetached) {

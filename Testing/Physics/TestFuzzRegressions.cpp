@@ -23,8 +23,8 @@ TEST(FuzzRegressions, UnderflowingOpacityLeavesNoNegativeLedgerEntry)
     const std::vector<Template> templates = generateTemplates(m, s);
     for (const Template& t : templates) {
       const EnergyLedger& l = t.ledger;
-      for (double f : { l.stored, l.lostInTransit, l.escaped, l.droppedBelowThreshold,
-             l.droppedAtCap }) {
+      for (double f :
+        { l.stored, l.lostInTransit, l.escaped, l.droppedBelowThreshold, l.droppedAtCap }) {
         EXPECT_GE(f, 0.0) << "opacity " << opacity;
       }
       EXPECT_NEAR(l.residual(), 0.0, 1e-12);

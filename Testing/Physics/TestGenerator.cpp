@@ -31,7 +31,8 @@ void expectWellFormed(const Template& t, const GeneratorSettings& s)
   const EnergyLedger& l = t.ledger;
   EXPECT_EQ(l.initial, 1.0);
   EXPECT_NEAR(l.residual(), 0.0, 1e-9);
-  for (double f : { l.stored, l.lostInTransit, l.escaped, l.droppedBelowThreshold, l.droppedAtCap }) {
+  for (double f :
+    { l.stored, l.lostInTransit, l.escaped, l.droppedBelowThreshold, l.droppedAtCap }) {
     EXPECT_GE(f, 0.0);
   }
   EXPECT_NEAR(photonSum(t), l.stored, 1e-6 * std::max(1.0, l.stored));
@@ -53,9 +54,9 @@ void expectWellFormed(const Template& t, const GeneratorSettings& s)
 bool bitIdentical(const Template& a, const Template& b)
 {
   return a.photons.size() == b.photons.size() &&
-    std::memcmp(a.photons.data(), b.photons.data(), a.photons.size() * sizeof(Photon)) == 0 &&
-    std::memcmp(&a.ledger, &b.ledger, sizeof a.ledger) == 0 && a.capped == b.capped &&
-    a.events == b.events;
+         std::memcmp(a.photons.data(), b.photons.data(), a.photons.size() * sizeof(Photon)) == 0 &&
+         std::memcmp(&a.ledger, &b.ledger, sizeof a.ledger) == 0 && a.capped == b.capped &&
+         a.events == b.events;
 }
 
 double topShare(const Template& t)
@@ -76,9 +77,8 @@ Material paperMaterial() // Tables 1-2: 50 % opacity; n of soft tissue
 TEST(Generator, EnergyLedgerClosesForThousandsOfRandomMaterials)
 {
   Pcg32 rng = Pcg32::forStream(2024, 0);
-  const auto logUniform = [&rng](double lo, double hi) {
-    return lo * std::pow(hi / lo, rng.uniform());
-  };
+  const auto logUniform = [&rng](
+                            double lo, double hi) { return lo * std::pow(hi / lo, rng.uniform()); };
   int capped = 0, escapedSome = 0;
   for (int draw = 0; draw < 3000; ++draw) {
     Material m;
@@ -127,7 +127,8 @@ TEST(Generator, PhotonsSortedByDescendingIntensityTiesByCell)
     ++ties;
     const auto cell = [&s](const Photon& p) {
       return std::array<double, 3>{ std::floor(p.position.x / s.latticeCell + 0.5),
-        std::floor(p.position.y / s.latticeCell + 0.5), std::floor(p.position.z / s.latticeCell + 0.5) };
+        std::floor(p.position.y / s.latticeCell + 0.5),
+        std::floor(p.position.z / s.latticeCell + 0.5) };
     };
     EXPECT_LT(cell(a), cell(b)) << j;
   }

@@ -19,8 +19,8 @@ void expectClosedLedger(const Template& t)
 {
   EXPECT_NEAR(t.ledger.residual(), 0.0, 1e-9);
   for (const Photon& p : t.photons) {
-    ASSERT_TRUE(std::isfinite(p.position.x) && std::isfinite(p.position.y) &&
-      std::isfinite(p.position.z));
+    ASSERT_TRUE(
+      std::isfinite(p.position.x) && std::isfinite(p.position.y) && std::isfinite(p.position.z));
     ASSERT_GT(p.intensity, 0.0f);
     ASSERT_LE(glm::length(glm::dvec3(p.position)), 1.0 + 1e-6);
   }
@@ -63,7 +63,8 @@ TEST(HardInputs, TinyAndHugeRefractiveIndices)
 {
   for (double n : { 1e-3, 1e3 }) {
     for (double opacity : { 0.05, 0.5, 0.95 }) {
-      for (const Template& t : generateTemplates(withOpacityAndIndex(opacity, n), GeneratorSettings{})) {
+      for (const Template& t :
+        generateTemplates(withOpacityAndIndex(opacity, n), GeneratorSettings{})) {
         SCOPED_TRACE("n " + std::to_string(n) + " opacity " + std::to_string(opacity));
         expectClosedLedger(t);
         EXPECT_FALSE(t.photons.empty());

@@ -130,10 +130,10 @@ TEST(Half, EveryFiniteHalfRoundTrips)
 TEST(Half, RoundsToNearestEven)
 {
   EXPECT_EQ(floatToHalf(1.0f), 0x3C00u);
-  EXPECT_EQ(floatToHalf(1.0f + std::ldexp(1.0f, -11)), 0x3C00u);  // tie -> even
+  EXPECT_EQ(floatToHalf(1.0f + std::ldexp(1.0f, -11)), 0x3C00u);     // tie -> even
   EXPECT_EQ(floatToHalf(1.0f + 3 * std::ldexp(1.0f, -11)), 0x3C02u); // tie -> even (up)
   EXPECT_EQ(floatToHalf(65504.0f), 0x7BFFu);
-  EXPECT_EQ(floatToHalf(65520.0f), 0x7C00u); // rounds past the largest half
+  EXPECT_EQ(floatToHalf(65520.0f), 0x7C00u);              // rounds past the largest half
   EXPECT_EQ(floatToHalf(std::ldexp(1.0f, -25)), 0x0000u); // tie with 0 -> 0
   EXPECT_EQ(floatToHalf(std::ldexp(1.5f, -25)), 0x0001u); // smallest subnormal
   EXPECT_EQ(floatToHalf(-std::ldexp(1.0f, -24)), 0x8001u);

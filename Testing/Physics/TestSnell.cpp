@@ -86,10 +86,10 @@ TEST(Snell, RefractionObeysSnellsLaw)
     }
     ++refracted;
     EXPECT_NEAR(glm::length(*t), 1.0, 1e-12);
-    EXPECT_NEAR(n1 * sinI, n2 * sinBetween(*t, n), 1e-12);           // Snell
-    EXPECT_NEAR(glm::dot(glm::cross(d, n), *t), 0.0, 1e-12);        // plane of incidence
-    EXPECT_GE(glm::dot(d, n) * glm::dot(*t, n), -1e-15);             // crosses the surface
-    const auto flipped = refract(d, -n, n1, n2);                     // orientation-free
+    EXPECT_NEAR(n1 * sinI, n2 * sinBetween(*t, n), 1e-12);   // Snell
+    EXPECT_NEAR(glm::dot(glm::cross(d, n), *t), 0.0, 1e-12); // plane of incidence
+    EXPECT_GE(glm::dot(d, n) * glm::dot(*t, n), -1e-15);     // crosses the surface
+    const auto flipped = refract(d, -n, n1, n2);             // orientation-free
     ASSERT_TRUE(flipped.has_value());
     EXPECT_NEAR(glm::length(*flipped - *t), 0.0, 1e-14);
   }

@@ -132,10 +132,10 @@ public:
     f32(0.9f); // diffuse
     f32(0.6f);
     f32(0.5f);
-    u8(0);     // scalar range
+    u8(0); // scalar range
     f64(100.0);
     f64(300.0);
-    u32(0);    // label
+    u32(0); // label
     u32(templateCount);
   }
   // A valid template: `photons` photons of descending intensity whose sum is stored,
@@ -195,8 +195,8 @@ std::size_t templateCountAt(const std::string& name)
 }
 
 // Expects parse to fail with a message that contains `words` and names the byte `at`.
-void expectRejectedAt(const std::vector<std::uint8_t>& bytes, const std::string& words,
-  std::size_t at)
+void expectRejectedAt(
+  const std::vector<std::uint8_t>& bytes, const std::string& words, std::size_t at)
 {
   try {
     parseTemplates(bytes.data(), bytes.size());
@@ -233,7 +233,8 @@ TEST(TemplateIO, FileRoundTripIsBitIdentical)
       const Template& x = a.templates[t];
       const Template& y = b.templates[t];
       ASSERT_EQ(x.photons.size(), y.photons.size());
-      EXPECT_EQ(std::memcmp(x.photons.data(), y.photons.data(), x.photons.size() * sizeof(Photon)), 0);
+      EXPECT_EQ(
+        std::memcmp(x.photons.data(), y.photons.data(), x.photons.size() * sizeof(Photon)), 0);
       EXPECT_EQ(std::memcmp(&x.ledger, &y.ledger, sizeof x.ledger), 0);
       EXPECT_EQ(x.capped, y.capped);
       EXPECT_EQ(x.events, y.events);
@@ -412,8 +413,8 @@ TEST(TemplateIO, PhotonCountOverTheSettingsCapIsRejected)
   b.templateRecord(3, 10); // at the cap: fine
   const std::size_t photonCountAt = b.at();
   b.templateRecord(4, 10);
-  expectRejectedAt(b.finish(), "photon count 4 exceeds the settings' maxPhotonsPerTemplate 3",
-    photonCountAt);
+  expectRejectedAt(
+    b.finish(), "photon count 4 exceeds the settings' maxPhotonsPerTemplate 3", photonCountAt);
 
   TemplateSet set = exampleSet(1);
   set.settings.maxPhotonsPerTemplate =
@@ -431,8 +432,8 @@ TEST(TemplateIO, EventCountOverTheSettingsCapIsRejected)
   b.templateRecord(1, 100); // at the cap: fine
   const std::size_t eventCountAt = b.at() + 4 + 1;
   b.templateRecord(1, 101);
-  expectRejectedAt(b.finish(), "event count 101 exceeds the settings' maxEventsPerTemplate 100",
-    eventCountAt);
+  expectRejectedAt(
+    b.finish(), "event count 101 exceeds the settings' maxEventsPerTemplate 100", eventCountAt);
 
   TemplateSet set = exampleSet(1);
   set.settings.maxEventsPerTemplate = static_cast<int>(set.materials[0].templates[0].events) - 1;
@@ -451,8 +452,8 @@ TEST(TemplateIO, NulInMaterialNameIsRejected)
   b.templateRecord(1, 10);
   b.templateRecord(1, 10);
   // The offset is the NUL's own: after the name length byte and "sk".
-  expectRejectedAt(b.finish(), "material 0: name has a NUL byte (name byte 2 of 5)",
-    kFirstMaterialAt + 1 + 2);
+  expectRejectedAt(
+    b.finish(), "material 0: name has a NUL byte (name byte 2 of 5)", kFirstMaterialAt + 1 + 2);
 
   // The writer (and anything else that validates a material) refuses it too.
   TemplateSet set = exampleSet(1);
@@ -473,8 +474,8 @@ TEST(TemplateIO, MaterialCountThatDisagreesWithTheContentIsNamed)
   more.templateRecord(1, 10);
   more.templateRecord(1, 10);
   const std::size_t checksumAt = more.at();
-  expectRejectedAt(more.finish(), "the header counts 2 materials, but the file holds 1",
-    checksumAt);
+  expectRejectedAt(
+    more.finish(), "the header counts 2 materials, but the file holds 1", checksumAt);
 
   FileBuilder fewer; // counts 1, holds 2
   fewer.header(s, 1);

@@ -33,8 +33,8 @@ void expectRejected(const std::function<void()>& f, std::initializer_list<const 
   }
 }
 
-void expectMaterialRejected(const std::function<void(Material&)>& change,
-  std::initializer_list<const char*> words)
+void expectMaterialRejected(
+  const std::function<void(Material&)>& change, std::initializer_list<const char*> words)
 {
   Material m;
   m.name = "probe";
@@ -43,8 +43,8 @@ void expectMaterialRejected(const std::function<void(Material&)>& change,
   expectRejected([&] { generateTemplate(m, GeneratorSettings{}, 0); }, words);
 }
 
-void expectSettingsRejected(const std::function<void(GeneratorSettings&)>& change,
-  std::initializer_list<const char*> words)
+void expectSettingsRejected(
+  const std::function<void(GeneratorSettings&)>& change, std::initializer_list<const char*> words)
 {
   GeneratorSettings s;
   change(s);
@@ -75,7 +75,8 @@ TEST(Validation, MaterialRejectsBadRefractiveIndex)
 {
   expectMaterialRejected([](Material& m) { m.refractiveIndex = 0.0; }, { "refractiveIndex" });
   expectMaterialRejected([](Material& m) { m.refractiveIndex = -1.4; }, { "refractiveIndex" });
-  expectMaterialRejected([](Material& m) { m.refractiveIndex = kNaN; }, { "refractiveIndex", "NaN" });
+  expectMaterialRejected(
+    [](Material& m) { m.refractiveIndex = kNaN; }, { "refractiveIndex", "NaN" });
   expectMaterialRejected([](Material& m) { m.refractiveIndex = kInf; }, { "refractiveIndex" });
   expectMaterialRejected([](Material& m) { m.refractiveIndex = 1e6; }, { "refractiveIndex" });
 }
@@ -84,40 +85,41 @@ TEST(Validation, MaterialRejectsBadDiffuseAndSelector)
 {
   expectMaterialRejected([](Material& m) { m.diffuse.g = std::nanf(""); }, { "diffuse.g", "NaN" });
   expectMaterialRejected([](Material& m) { m.diffuse.b = -0.5f; }, { "diffuse.b" });
-  expectMaterialRejected([](Material& m) { m.selector = Selector::range(kNaN, 1.0); },
-    { "selector range" });
-  expectMaterialRejected([](Material& m) { m.selector = Selector::range(5.0, 1.0); },
-    { "selector range", "lo <= hi" });
-  expectMaterialRejected([](Material& m) { m.selector = Selector::labelId(-3); },
-    { "selector label", "-3" });
+  expectMaterialRejected(
+    [](Material& m) { m.selector = Selector::range(kNaN, 1.0); }, { "selector range" });
+  expectMaterialRejected(
+    [](Material& m) { m.selector = Selector::range(5.0, 1.0); }, { "selector range", "lo <= hi" });
+  expectMaterialRejected(
+    [](Material& m) { m.selector = Selector::labelId(-3); }, { "selector label", "-3" });
   expectMaterialRejected([](Material& m) { m.name.assign(300, 'x'); }, { "name" });
 }
 
 TEST(Validation, SettingsRejectBadValues)
 {
-  expectSettingsRejected([](GeneratorSettings& s) { s.initialLights = 0; }, { "initialLights", "0" });
+  expectSettingsRejected(
+    [](GeneratorSettings& s) { s.initialLights = 0; }, { "initialLights", "0" });
   expectSettingsRejected([](GeneratorSettings& s) { s.initialLights = -4; }, { "initialLights" });
   expectSettingsRejected([](GeneratorSettings& s) { s.threshold = 0.0; }, { "threshold" });
   expectSettingsRejected([](GeneratorSettings& s) { s.threshold = -0.01; }, { "threshold" });
   expectSettingsRejected([](GeneratorSettings& s) { s.threshold = kNaN; }, { "threshold", "NaN" });
-  expectSettingsRejected([](GeneratorSettings& s) { s.templatesPerMaterial = 0; },
-    { "templatesPerMaterial" });
+  expectSettingsRejected(
+    [](GeneratorSettings& s) { s.templatesPerMaterial = 0; }, { "templatesPerMaterial" });
   expectSettingsRejected([](GeneratorSettings& s) { s.stepLength = 0.0; }, { "stepLength" });
   expectSettingsRejected([](GeneratorSettings& s) { s.stepLength = kNaN; }, { "stepLength" });
   expectSettingsRejected([](GeneratorSettings& s) { s.latticeCell = 0.0; }, { "latticeCell" });
   expectSettingsRejected([](GeneratorSettings& s) { s.latticeCell = -1.0; }, { "latticeCell" });
-  expectSettingsRejected([](GeneratorSettings& s) { s.maxPhotonsPerTemplate = 0; },
-    { "maxPhotonsPerTemplate" });
-  expectSettingsRejected([](GeneratorSettings& s) { s.maxEventsPerTemplate = -1; },
-    { "maxEventsPerTemplate" });
+  expectSettingsRejected(
+    [](GeneratorSettings& s) { s.maxPhotonsPerTemplate = 0; }, { "maxPhotonsPerTemplate" });
+  expectSettingsRejected(
+    [](GeneratorSettings& s) { s.maxEventsPerTemplate = -1; }, { "maxEventsPerTemplate" });
   expectSettingsRejected([](GeneratorSettings& s) { s.maxEventsPerTemplate = kMaxEventsCap + 1; },
     { "maxEventsPerTemplate" });
 }
 
 TEST(Validation, TemplateIndexMustBeNonNegative)
 {
-  expectRejected([] { generateTemplate(Material{}, GeneratorSettings{}, -1); },
-    { "templateIndex", "-1" });
+  expectRejected(
+    [] { generateTemplate(Material{}, GeneratorSettings{}, -1); }, { "templateIndex", "-1" });
 }
 
 TEST(Validation, SelectorMatching)

@@ -12,19 +12,27 @@
 
 using namespace scatterer_reference;
 
-namespace {
+namespace
+{
 constexpr double kPi = 3.14159265358979323846;
 
-struct Stat {
+struct Stat
+{
   double sum = 0, sum2 = 0;
   long n = 0;
-  void add(double v) { sum += v; sum2 += v * v; ++n; }
+  void add(double v)
+  {
+    sum += v;
+    sum2 += v * v;
+    ++n;
+  }
   double mean() const { return sum / n; }
   double se() const { return std::sqrt(std::max(0.0, sum2 / n - mean() * mean()) / (n - 1)); }
 };
 
 #define EXPECT_WITHIN_4SE(stat, exact)                                                             \
-  std::printf("  estimate %.6f +- %.6f (1 SE), exact %.6f\n", (stat).mean(), (stat).se(), double(exact)); \
+  std::printf(                                                                                     \
+    "  estimate %.6f +- %.6f (1 SE), exact %.6f\n", (stat).mean(), (stat).se(), double(exact));    \
   EXPECT_NEAR((stat).mean(), (exact), 4.0 * (stat).se() + 1e-9)                                    \
     << "mean " << (stat).mean() << " se " << (stat).se() << " exact " << (exact)
 
@@ -62,7 +70,8 @@ TEST(ReferenceClosedForms, SigmaFromOpacityMatchesVtkOpacityCorrection)
 {
   // alpha per u = 2 world units: through d = 5 units the opacity is 1 - (1 - alpha)^(d/u).
   const double alpha = 0.3, u = 2.0, d = 5.0;
-  EXPECT_NEAR(1.0 - std::exp(-sigmaFromOpacity(alpha, u) * d), 1.0 - std::pow(1.0 - alpha, d / u), 1e-12);
+  EXPECT_NEAR(
+    1.0 - std::exp(-sigmaFromOpacity(alpha, u) * d), 1.0 - std::pow(1.0 - alpha, d / u), 1e-12);
   EXPECT_EQ(sigmaFromOpacity(0.0, 1.0), 0.0);
   EXPECT_TRUE(std::isfinite(sigmaFromOpacity(1.0, 1.0)));
 }
@@ -123,7 +132,8 @@ TEST(ReferenceClosedForms, AbsorptionSlabInFrontOfABackgroundLight)
   EXPECT_GT(r.rmsStandardError, 0.0);
   // The stated per-pixel standard error is that of a Bernoulli(exp(-tau)) mean.
   const double p = std::exp(-sigma * d);
-  EXPECT_NEAR(r.rmsStandardError, std::sqrt(p * (1 - p) / 512.0), 0.15 * std::sqrt(p * (1 - p) / 512.0));
+  EXPECT_NEAR(
+    r.rmsStandardError, std::sqrt(p * (1 - p) / 512.0), 0.15 * std::sqrt(p * (1 - p) / 512.0));
 }
 
 TEST(ReferenceClosedForms, EmissionAbsorptionSlab)
@@ -143,7 +153,8 @@ TEST(ReferenceClosedForms, EmissionAbsorptionSlab)
   EXPECT_NEAR(mean, exact, 4.0 * se) << "se " << se;
 }
 
-namespace {
+namespace
+{
 // Exact single scattering reflected by a homogeneous slab (Chandrasekhar; van de Hulst's
 // first-order reflection): L = a E p mu0 / (mu + mu0) (1 - exp(-tau (1/mu + 1/mu0))).
 double singleScatteringReflection(double a, double E, double p, double mu, double mu0, double tau)
@@ -167,7 +178,8 @@ TEST(ReferenceClosedForms, SingleScatteringFromAHomogeneousSlab)
   {
     Scene s = slab(6, d, sigma, glm::vec3(float(a)));
     s.anisotropy = g;
-    s.directionalLights.push_back({ glm::dvec3(std::sin(theta0), 0.0, mu0), glm::dvec3(1.0, 0.5, 0.25) });
+    s.directionalLights.push_back(
+      { glm::dvec3(std::sin(theta0), 0.0, mu0), glm::dvec3(1.0, 0.5, 0.25) });
     PathTracer tracer(s);
     RenderSettings rs;
     rs.maxScatteringOrder = 1;
@@ -185,7 +197,8 @@ TEST(ReferenceClosedForms, SingleScatteringFromAHomogeneousSlab)
     for (int c = 0; c < 3; ++c)
     {
       const double E = s.directionalLights[0].irradiance[c];
-      EXPECT_WITHIN_4SE(st[c], singleScatteringReflection(a, E, p, mu, mu0, sigma * d)) << " g " << g << " c " << c;
+      EXPECT_WITHIN_4SE(st[c], singleScatteringReflection(a, E, p, mu, mu0, sigma * d))
+        << " g " << g << " c " << c;
     }
   }
 }

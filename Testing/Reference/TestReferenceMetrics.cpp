@@ -7,7 +7,8 @@
 
 using namespace scatterer_reference;
 
-namespace {
+namespace
+{
 std::vector<float> constant(int w, int h, float v)
 {
   return std::vector<float>(static_cast<size_t>(w) * h * 3, v);
@@ -18,7 +19,8 @@ std::vector<float> ramp(int w, int h)
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
       for (int c = 0; c < 3; ++c)
-        img[(static_cast<size_t>(y) * w + x) * 3 + c] = 0.1f + 0.8f * float((x * 7 + y * 3) % 16) / 15.0f;
+        img[(static_cast<size_t>(y) * w + x) * 3 + c] =
+          0.1f + 0.8f * float((x * 7 + y * 3) % 16) / 15.0f;
   return img;
 }
 }

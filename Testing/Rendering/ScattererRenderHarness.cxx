@@ -94,8 +94,8 @@ void SavePng(const std::string& path, const std::vector<unsigned char>& rgba, in
   writer->Write();
 }
 
-ImageDifference CompareRgb(const std::vector<unsigned char>& a,
-  const std::vector<unsigned char>& b, int levels, const std::vector<bool>* include)
+ImageDifference CompareRgb(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b,
+  int levels, const std::vector<bool>* include)
 {
   ImageDifference d;
   if (a.size() != b.size() || (include && include->size() != a.size() / 4))
@@ -143,11 +143,13 @@ double MeanBrightness(const std::vector<unsigned char>& image)
 EventCounter::EventCounter(vtkObject* object, unsigned long event)
 {
   this->Command->SetClientData(this);
-  this->Command->SetCallback([](vtkObject*, unsigned long, void* client, void* call) {
-    auto* self = static_cast<EventCounter*>(client);
-    ++self->Count;
-    self->Last = call ? static_cast<const char*>(call) : "";
-  });
+  this->Command->SetCallback(
+    [](vtkObject*, unsigned long, void* client, void* call)
+    {
+      auto* self = static_cast<EventCounter*>(client);
+      ++self->Count;
+      self->Last = call ? static_cast<const char*>(call) : "";
+    });
   object->AddObserver(event, this->Command);
 }
 }

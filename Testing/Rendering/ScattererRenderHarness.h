@@ -60,8 +60,8 @@ struct ImageDifference
  * Compares @p a and @p b (RGBA). With @p include, only the pixels where it is
  * true count (one entry per pixel). Sizes must match (Worst 256 otherwise).
  */
-ImageDifference CompareRgb(const std::vector<unsigned char>& a,
-  const std::vector<unsigned char>& b, int levels, const std::vector<bool>* include = nullptr);
+ImageDifference CompareRgb(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b,
+  int levels, const std::vector<bool>* include = nullptr);
 
 /** Mean of the RGB channels. */
 double MeanBrightness(const std::vector<unsigned char>& image);

@@ -147,7 +147,8 @@ TEST(BadInput, AbsurdParametersAreClampedOrRejectedWithTheirName)
   EXPECT_TRUE(capture.Has("SetTemplatesPerMaterial: 0 is outside")) << capture.Window->Text;
   EXPECT_EQ(stage.Mapper->GetTemplatesPerMaterial(), 1);
   stage.Mapper->SetOcclusionStrength(std::numeric_limits<double>::quiet_NaN());
-  EXPECT_TRUE(capture.Has("SetOcclusionStrength: NaN is not a valid value")) << capture.Window->Text;
+  EXPECT_TRUE(capture.Has("SetOcclusionStrength: NaN is not a valid value"))
+    << capture.Window->Text;
   EXPECT_EQ(stage.Mapper->GetOcclusionStrength(), 1.0);
   stage.Mapper->AddScalarRangeMaterial(std::numeric_limits<double>::quiet_NaN(), 1, 1.4, 1, 1, 1);
   EXPECT_TRUE(capture.Has("every argument must be finite")) << capture.Window->Text;
@@ -167,8 +168,8 @@ TEST(BadInput, AbsurdParametersAreClampedOrRejectedWithTheirName)
   for (double radius : { std::numeric_limits<double>::max(), 1e-300 })
   {
     stage.Mapper->SetTemplateRadius(radius);
-    for (int mode : { vtkScattererTemplateVolumeMapper::TRANSPORT,
-           vtkScattererTemplateVolumeMapper::PER_SAMPLE })
+    for (int mode :
+      { vtkScattererTemplateVolumeMapper::TRANSPORT, vtkScattererTemplateVolumeMapper::PER_SAMPLE })
     {
       stage.Mapper->SetIlluminationMode(mode);
       stage.Render();
@@ -180,7 +181,8 @@ TEST(BadInput, AbsurdParametersAreClampedOrRejectedWithTheirName)
   stage.Mapper->SetIlluminationModeToTransport();
   stage.Mapper->SetMaterialDerivationRange(0.0, std::numeric_limits<double>::infinity());
   EXPECT_TRUE(capture.Has("the range must be finite")) << capture.Window->Text;
-  EXPECT_GT(stage.Mapper->GetMaterialDerivationRange()[0], stage.Mapper->GetMaterialDerivationRange()[1])
+  EXPECT_GT(
+    stage.Mapper->GetMaterialDerivationRange()[0], stage.Mapper->GetMaterialDerivationRange()[1])
     << "still unset: materials come from the data range";
   // After all that the mapper still illuminates, with the clamped values.
   const auto image = stage.Render();

@@ -186,8 +186,8 @@ std::vector<bool> Agreeing(
 
 void Print(const char* what, const scatterer_testing::ImageDifference& d)
 {
-  std::printf("%s: %zu pixels, mean %.3f levels, %.3f %% over 8 levels, worst %d\n", what,
-    d.Pixels, d.Mean, 100.0 * d.FractionOver, d.Worst);
+  std::printf("%s: %zu pixels, mean %.3f levels, %.3f %% over 8 levels, worst %d\n", what, d.Pixels,
+    d.Mean, 100.0 * d.FractionOver, d.Worst);
 }
 
 // The ball with `removal` against the zeroed ball, both lit by the transport volume,
@@ -203,13 +203,14 @@ void ExpectLitLikeZeroed(Removal removal)
   EXPECT_GT(scatterer_testing::MeanBrightness(removed), 5.0) << "the ball is visible";
 
   // Where the unlit ray caster already tells the removal from zeroed voxels: the rim.
-  const auto agree = Agreeing(
-    Render(whole, removal, Mode::Stock), Render(zeroed, Removal::None, Mode::Stock), 2);
+  const auto agree =
+    Agreeing(Render(whole, removal, Mode::Stock), Render(zeroed, Removal::None, Mode::Stock), 2);
   const double rim =
     1.0 - static_cast<double>(std::count(agree.begin(), agree.end(), true)) / agree.size();
-  std::printf("left out (stock renders differ by more than 2 levels): %.2f %% of the pixels\n",
-    100.0 * rim);
-  Print("transport, removed vs zeroed, all pixels", scatterer_testing::CompareRgb(removed, empty, 8));
+  std::printf(
+    "left out (stock renders differ by more than 2 levels): %.2f %% of the pixels\n", 100.0 * rim);
+  Print(
+    "transport, removed vs zeroed, all pixels", scatterer_testing::CompareRgb(removed, empty, 8));
   const auto lit = scatterer_testing::CompareRgb(removed, empty, 8, &agree);
   Print("transport, removed vs zeroed, rim left out", lit);
   EXPECT_LE(rim, 0.03) << "the left-out rim would hide too much";

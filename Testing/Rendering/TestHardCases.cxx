@@ -39,8 +39,8 @@ namespace
 using Field = std::function<double(double x, double y, double z)>; // x,y,z in [-1, 1]
 
 // A dims volume of `type` sampled from f over [-1,1]^3, spacing `spacing`.
-vtkSmartPointer<vtkImageData> MakeVolume(const int dims[3], int type, const double spacing[3],
-  const Field& f)
+vtkSmartPointer<vtkImageData> MakeVolume(
+  const int dims[3], int type, const double spacing[3], const Field& f)
 {
   auto image = vtkSmartPointer<vtkImageData>::New();
   image->SetDimensions(dims[0], dims[1], dims[2]);
@@ -65,8 +65,8 @@ double BallAndHalo(double x, double y, double z)
 
 // A white scene light with a white ambient colour: with it, a sample in full
 // shadow keeps the property's ambient term, so a black pixel means a NaN.
-vtkSmartPointer<vtkLight> SceneLight(double x, double y, double z, double fx = 0, double fy = 0,
-  double fz = 0)
+vtkSmartPointer<vtkLight> SceneLight(
+  double x, double y, double z, double fx = 0, double fy = 0, double fz = 0)
 {
   auto light = vtkSmartPointer<vtkLight>::New();
   light->SetLightTypeToSceneLight();
@@ -163,8 +163,8 @@ Result Render(const HardScene& setup, int mode)
 // The checks every hard case must pass, in both modes.
 void Check(const HardScene& setup)
 {
-  for (int mode : { vtkScattererTemplateVolumeMapper::TRANSPORT,
-         vtkScattererTemplateVolumeMapper::PER_SAMPLE })
+  for (int mode :
+    { vtkScattererTemplateVolumeMapper::TRANSPORT, vtkScattererTemplateVolumeMapper::PER_SAMPLE })
   {
     SCOPED_TRACE(mode == vtkScattererTemplateVolumeMapper::TRANSPORT ? "transport" : "per-sample");
     const Result r = Render(setup, mode);
@@ -182,11 +182,13 @@ void Check(const HardScene& setup)
         brighter += r.Occluded[i + c] > r.Open[i + c] + 2 ? 1 : 0;
       }
     }
-    EXPECT_EQ(blackHoles, 0) << "pixels lit without occlusion came out black (NaN?): " << r.Features;
+    EXPECT_EQ(blackHoles, 0) << "pixels lit without occlusion came out black (NaN?): "
+                             << r.Features;
     if (blackHoles || brighter || stock != setup.ExpectStock)
     {
       const std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-      scatterer_testing::SavePng(name + "-" + std::to_string(mode) + "-occluded.png", r.Occluded, 160, 160);
+      scatterer_testing::SavePng(
+        name + "-" + std::to_string(mode) + "-occluded.png", r.Occluded, 160, 160);
       scatterer_testing::SavePng(name + "-" + std::to_string(mode) + "-open.png", r.Open, 160, 160);
     }
     EXPECT_EQ(brighter, 0) << "occlusion made pixels brighter: " << r.Features;
@@ -226,7 +228,8 @@ TEST(HardCases, OpacityOne)
 TEST(HardCases, RefractiveIndexRatioOneThousandth)
 {
   HardScene s;
-  s.Mapper = [](vtkScattererTemplateVolumeMapper* m) {
+  s.Mapper = [](vtkScattererTemplateVolumeMapper* m)
+  {
     m->AddScalarRangeMaterial(60, 160, 1e-3, 1, 0.6, 0.4);
     m->AddScalarRangeMaterial(160, 255, 1.0, 0.9, 0.9, 1);
   };
@@ -236,7 +239,8 @@ TEST(HardCases, RefractiveIndexRatioOneThousandth)
 TEST(HardCases, RefractiveIndexRatioOneThousandAndTotalInternalReflection)
 {
   HardScene s;
-  s.Mapper = [](vtkScattererTemplateVolumeMapper* m) {
+  s.Mapper = [](vtkScattererTemplateVolumeMapper* m)
+  {
     m->AddScalarRangeMaterial(60, 160, 1e3, 1, 0.6, 0.4);
     m->AddScalarRangeMaterial(160, 255, 1.0, 0.9, 0.9, 1);
   };
@@ -249,17 +253,19 @@ TEST(HardCases, EqualIndicesMakeTheBoundaryCodeAnIdentity)
   // photon and scales no intensity, so keeping its code changes no pixel.
   HardScene s;
   Opacity(s, 0.6, 0.6);
-  auto materials = [](vtkScattererTemplateVolumeMapper* m) {
+  auto materials = [](vtkScattererTemplateVolumeMapper* m)
+  {
     m->AddScalarRangeMaterial(60, 160, 1.4, 1, 0.6, 0.4);
     m->AddScalarRangeMaterial(160, 255, 1.4, 1, 0.6, 0.4);
     m->ColorBleedingEnabledOff();
   };
-  for (int mode : { vtkScattererTemplateVolumeMapper::TRANSPORT,
-         vtkScattererTemplateVolumeMapper::PER_SAMPLE })
+  for (int mode :
+    { vtkScattererTemplateVolumeMapper::TRANSPORT, vtkScattererTemplateVolumeMapper::PER_SAMPLE })
   {
     s.Mapper = materials;
     const Result automatic = Render(s, mode);
-    s.Mapper = [&](vtkScattererTemplateVolumeMapper* m) {
+    s.Mapper = [&](vtkScattererTemplateVolumeMapper* m)
+    {
       materials(m);
       m->SetShaderPathSelectionToAsRequested();
     };
@@ -317,8 +323,8 @@ TEST(HardCases, OneVoxelVolume)
   s.ExpectStock = false;
   // VTK cannot ray cast a single voxel (no extent to march through); whatever
   // it draws, nothing may crash or raise a GL error, and the checks hold.
-  for (int mode : { vtkScattererTemplateVolumeMapper::TRANSPORT,
-         vtkScattererTemplateVolumeMapper::PER_SAMPLE })
+  for (int mode :
+    { vtkScattererTemplateVolumeMapper::TRANSPORT, vtkScattererTemplateVolumeMapper::PER_SAMPLE })
   {
     const Result r = Render(s, mode);
     EXPECT_EQ(r.Occluded.size(), r.Open.size());
@@ -337,8 +343,8 @@ TEST(HardCases, OneRowVolume)
   HardScene s;
   s.Dims[1] = s.Dims[2] = 1;
   s.F = [](double x, double, double) { return std::abs(x) < 0.5 ? 200.0 : 100.0; };
-  for (int mode : { vtkScattererTemplateVolumeMapper::TRANSPORT,
-         vtkScattererTemplateVolumeMapper::PER_SAMPLE })
+  for (int mode :
+    { vtkScattererTemplateVolumeMapper::TRANSPORT, vtkScattererTemplateVolumeMapper::PER_SAMPLE })
   {
     const Result r = Render(s, mode);
     EXPECT_EQ(r.Occluded.size(), r.Open.size());
@@ -349,7 +355,8 @@ TEST(HardCases, FloatScalarsWithNaNAndInfinities)
 {
   HardScene s;
   s.Type = VTK_FLOAT;
-  s.F = [](double x, double y, double z) {
+  s.F = [](double x, double y, double z)
+  {
     const int cell = static_cast<int>((x + 1) * 7) + 3 * static_cast<int>((y + 1) * 7) +
       5 * static_cast<int>((z + 1) * 7);
     if (cell % 11 == 0)
@@ -367,7 +374,8 @@ TEST(HardCases, Int16ScalarsAtTheirExtremes)
 {
   HardScene s;
   s.Type = VTK_SHORT;
-  s.F = [](double x, double y, double z) {
+  s.F = [](double x, double y, double z)
+  {
     const double v = BallAndHalo(x, y, z);
     return x > 0.6 ? 32767.0 : (x < -0.6 ? -32768.0 : v);
   };
@@ -377,7 +385,8 @@ TEST(HardCases, Int16ScalarsAtTheirExtremes)
 TEST(HardCases, CameraInsideTheVolume)
 {
   HardScene s;
-  s.Scene = [](vtkRenderer* ren, vtkImageData*) {
+  s.Scene = [](vtkRenderer* ren, vtkImageData*)
+  {
     ren->AddLight(SceneLight(1, 0.5, 0.8));
     ren->GetActiveCamera()->SetPosition(15.5, 15.5, 10.0); // inside the halo
     ren->GetActiveCamera()->SetFocalPoint(15.5, 15.5, 15.5);
@@ -389,7 +398,8 @@ TEST(HardCases, CameraInsideTheVolume)
 TEST(HardCases, PositionalLightInsideTheVolume)
 {
   HardScene s;
-  s.Scene = [](vtkRenderer* ren, vtkImageData*) {
+  s.Scene = [](vtkRenderer* ren, vtkImageData*)
+  {
     auto light = SceneLight(15.5, 15.5, 15.5); // the centre of the ball
     light->PositionalOn();
     light->SetConeAngle(180);
@@ -401,7 +411,8 @@ TEST(HardCases, PositionalLightInsideTheVolume)
 TEST(HardCases, LightExactlyBehindTheVolume)
 {
   HardScene s;
-  s.Scene = [](vtkRenderer* ren, vtkImageData*) {
+  s.Scene = [](vtkRenderer* ren, vtkImageData*)
+  {
     vtkCamera* cam = ren->GetActiveCamera();
     double p[3], f[3];
     cam->GetPosition(p);
@@ -421,7 +432,8 @@ TEST(HardCases, NearlyTransparentVolume)
 TEST(HardCases, ExtremelySmallPhotonThreshold)
 {
   HardScene s;
-  s.Mapper = [](vtkScattererTemplateVolumeMapper* m) {
+  s.Mapper = [](vtkScattererTemplateVolumeMapper* m)
+  {
     m->SetPhotonThreshold(0.0);
     m->SetGeneratorThreshold(1e-6);
     m->SetPhotonCap(1024);

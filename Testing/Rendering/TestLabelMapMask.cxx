@@ -124,9 +124,8 @@ TEST(LabelMapMask, TwoHundredLabelsAreLitWithoutHolesAndKeepTheirColours)
       ++shown;
       holes += l < 9 ? 1 : 0;
     }
-    auto red = [](const std::vector<unsigned char>& x, size_t q) {
-      return x[q] > 40 && x[q] > 2 * x[q + 1] && x[q] > 2 * x[q + 2];
-    };
+    auto red = [](const std::vector<unsigned char>& x, size_t q)
+    { return x[q] > 40 && x[q] > 2 * x[q + 1] && x[q] > 2 * x[q + 2]; };
     redStock += red(stock, p) ? 1 : 0;
     redLit += red(lit, p) ? 1 : 0;
   }

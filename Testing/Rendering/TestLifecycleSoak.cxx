@@ -167,7 +167,8 @@ TEST(LifecycleSoak, RandomTogglesOnEightVolumesStayBounded)
 
   std::mt19937 random(13);
   auto coin = [&random]() { return (random() & 1u) != 0; };
-  auto setLights = [](vtkRenderer* renderer, int count, bool positional) {
+  auto setLights = [](vtkRenderer* renderer, int count, bool positional)
+  {
     renderer->RemoveAllLights();
     for (int l = 0; l < count; ++l)
     {
@@ -180,7 +181,8 @@ TEST(LifecycleSoak, RandomTogglesOnEightVolumesStayBounded)
     }
   };
   auto setVolume = [&](size_t i, int materials, bool lit, bool transport, bool shade,
-                     const std::array<bool, 6>& switches) {
+                     const std::array<bool, 6>& switches)
+  {
     vtkScattererTemplateVolumeMapper* m = mappers[i];
     m->RemoveAllMaterials();
     for (int k = 0; k < materials; ++k)
@@ -200,7 +202,8 @@ TEST(LifecycleSoak, RandomTogglesOnEightVolumesStayBounded)
     m->SetShaderPathSelection(switches[5] ? vtkScattererTemplateVolumeMapper::AUTOMATIC
                                           : vtkScattererTemplateVolumeMapper::AS_REQUESTED);
   };
-  auto setFirstScene = [&]() {
+  auto setFirstScene = [&]()
+  {
     for (size_t r = 0; r < renderers.size(); ++r)
     {
       setLights(renderers[r], 1 + static_cast<int>(r) % 2, r == 3);
@@ -231,8 +234,8 @@ TEST(LifecycleSoak, RandomTogglesOnEightVolumesStayBounded)
       const bool lit = random() % 4 != 0;
       const bool transport = coin();
       const bool shade = coin();
-      setVolume(i, materials, lit, transport, shade,
-        { coin(), coin(), coin(), coin(), coin(), coin() });
+      setVolume(
+        i, materials, lit, transport, shade, { coin(), coin(), coin(), coin(), coin(), coin() });
     }
     window->Render();
     if (frame == 200)

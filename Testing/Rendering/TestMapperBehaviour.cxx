@@ -241,8 +241,8 @@ TEST(MapperBehaviour, MultiComponentDataRendersAsStockWithOneWarning)
 
 TEST(MapperBehaviour, UniformOnlyChangesDoNotRebuildTheShader)
 {
-  for (int mode : { vtkScattererTemplateVolumeMapper::TRANSPORT,
-         vtkScattererTemplateVolumeMapper::PER_SAMPLE })
+  for (int mode :
+    { vtkScattererTemplateVolumeMapper::TRANSPORT, vtkScattererTemplateVolumeMapper::PER_SAMPLE })
   {
     Scene scene;
     scene.Mapper->SetIlluminationMode(mode);
@@ -258,7 +258,8 @@ TEST(MapperBehaviour, UniformOnlyChangesDoNotRebuildTheShader)
     EXPECT_EQ(reused.Count, 2) << "a uniform-only change rebuilt the shader (mode " << mode << ")";
     scene.Mapper->ShadowsEnabledOff();
     scene.Render();
-    EXPECT_EQ(reused.Count, 2) << "switching an effect off must change the shader (mode " << mode << ")";
+    EXPECT_EQ(reused.Count, 2) << "switching an effect off must change the shader (mode " << mode
+                               << ")";
   }
 }
 
@@ -325,8 +326,8 @@ TEST(MapperBehaviour, ShaderThatFailsToCompileFallsBackToStockWithAnError)
 
 TEST(MapperBehaviour, OcclusionOnlyEverDarkens)
 {
-  for (int mode : { vtkScattererTemplateVolumeMapper::TRANSPORT,
-         vtkScattererTemplateVolumeMapper::PER_SAMPLE })
+  for (int mode :
+    { vtkScattererTemplateVolumeMapper::TRANSPORT, vtkScattererTemplateVolumeMapper::PER_SAMPLE })
   {
     Scene scene(true);
     scene.Mapper->SetIlluminationMode(mode);
@@ -390,8 +391,10 @@ TEST(MapperBehaviour, CroppingClippingAndOpaqueGeometryCoverTheSamePixelsAsStock
     << scene.Mapper->GetLastShaderFeatures();
   const auto stock = scene.RenderStock();
   const unsigned char bg[3] = { 26, 26, 51 };
-  auto covered = [&](const std::vector<unsigned char>& img, size_t i) {
-    return std::abs(img[i] - bg[0]) + std::abs(img[i + 1] - bg[1]) + std::abs(img[i + 2] - bg[2]) > 6;
+  auto covered = [&](const std::vector<unsigned char>& img, size_t i)
+  {
+    return std::abs(img[i] - bg[0]) + std::abs(img[i + 1] - bg[1]) + std::abs(img[i + 2] - bg[2]) >
+      6;
   };
   size_t differ = 0, coveredCount = 0, geometrySame = 0, geometry = 0;
   for (size_t i = 0; i < stock.size(); i += 4)
@@ -402,7 +405,8 @@ TEST(MapperBehaviour, CroppingClippingAndOpaqueGeometryCoverTheSamePixelsAsStock
     if (stock[i + 1] > 150 && stock[i] < 90 && stock[i + 2] < 110)
     {
       ++geometry;
-      geometrySame += (stock[i] == ours[i] && stock[i + 1] == ours[i + 1] && stock[i + 2] == ours[i + 2]) ? 1 : 0;
+      geometrySame +=
+        (stock[i] == ours[i] && stock[i + 1] == ours[i + 1] && stock[i + 2] == ours[i + 2]) ? 1 : 0;
     }
   }
   EXPECT_GT(coveredCount, stock.size() / 4 / 20) << "the scene shows nothing";

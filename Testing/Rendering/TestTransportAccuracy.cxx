@@ -30,16 +30,16 @@
 
 namespace
 {
-constexpr int kGrid = 48;  // the shell-plate scene on a 48^3 grid (spacing ~2)
-constexpr int kSize = 64;  // image width and height
+constexpr int kGrid = 48; // the shell-plate scene on a 48^3 grid (spacing ~2)
+constexpr int kSize = 64; // image width and height
 // Reference samples per pixel: about 6 s on one core, RMS standard error 3e-4, about 1/25
 // of stock Phong's RMSE here (errors add in quadrature: it moves the RMSEs by ~1e-5).
 constexpr int kSpp = 1024;
 
 // Renders the scene with `mapper` in the shared window at kSize^2 and returns linear
 // RGB in [0, 1], bottom row first (as the reference).
-std::vector<float> RenderGpu(const scatterer_reference_vtk::VtkScene& scene,
-  vtkGPUVolumeRayCastMapper* mapper, bool shade)
+std::vector<float> RenderGpu(
+  const scatterer_reference_vtk::VtkScene& scene, vtkGPUVolumeRayCastMapper* mapper, bool shade)
 {
   mapper->SetInputData(scene.Image);
   mapper->SetBlendModeToComposite();
@@ -88,8 +88,8 @@ struct Reference
 
 Reference RenderReference(const scatterer_reference_vtk::VtkScene& scene)
 {
-  scatterer_reference::PathTracer tracer(scatterer_reference_vtk::Convert(
-    scene.Image, scene.Property, scene.Renderer, kSize, kSize));
+  scatterer_reference::PathTracer tracer(
+    scatterer_reference_vtk::Convert(scene.Image, scene.Property, scene.Renderer, kSize, kSize));
   scatterer_reference::RenderSettings settings;
   settings.samplesPerPixel = kSpp;
   settings.seed = 1;

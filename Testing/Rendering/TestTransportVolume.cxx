@@ -182,10 +182,12 @@ TEST(TransportVolume, SphereShadowFallsWhereGeometryPutsIt)
   // toward (0.25, 0, 1): at z = 7 the ball's shadow is centred at x = 24 - 0.25 (36 - 7)
   // = 16.75, an ellipse of half-width 5 / cos(14 deg) = 5.2 along x and 5 along y.
   const int n = 48;
-  auto image = MakeVolume(n, 1.0, [](int i, int j, int k) -> unsigned char {
-    const double r2 = (i - 24.0) * (i - 24.0) + (j - 24.0) * (j - 24.0) + (k - 36.0) * (k - 36.0);
-    return (r2 <= 25.0 || (k >= 4 && k <= 6)) ? 200 : 0;
-  });
+  auto image = MakeVolume(n, 1.0,
+    [](int i, int j, int k) -> unsigned char
+    {
+      const double r2 = (i - 24.0) * (i - 24.0) + (j - 24.0) * (j - 24.0) + (k - 36.0) * (k - 36.0);
+      return (r2 <= 25.0 || (k >= 4 && k <= 6)) ? 200 : 0;
+    });
   TransportScene scene(image, 0.95);
   scene.SetDirectional(0.25, 0, 1.0);
   const auto t = scene.Transmittance();

@@ -87,8 +87,7 @@ std::vector<unsigned char> RenderOwnedPart(
   vtkNew<vtkRenderer> renderer;
   scatterer_examples::AddVolume(renderer, mapper, property);
   renderer->AutomaticLightCreationOff();
-  scatterer_testing::AddSceneLight(
-    renderer, NX + 100, 0.5 * NY, 0.5 * NZ, NX, 0.5 * NY, 0.5 * NZ);
+  scatterer_testing::AddSceneLight(renderer, NX + 100, 0.5 * NY, 0.5 * NZ, NX, 0.5 * NY, 0.5 * NZ);
   vtkCamera* camera = renderer->GetActiveCamera();
   // From the far end, so rays reach the crop plane x = 48 at its back rather than
   // grazing along it (where a sample just inside or outside the plane would flip
@@ -108,8 +107,8 @@ std::vector<unsigned char> RenderOwnedPart(
 
 struct Difference
 {
-  double Mean = 0.0;            // mean absolute difference per channel (0..255)
-  double FractionOver4 = 0.0;   // pixels with a channel more than 4 levels off
+  double Mean = 0.0;          // mean absolute difference per channel (0..255)
+  double FractionOver4 = 0.0; // pixels with a channel more than 4 levels off
 };
 
 Difference Compare(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b)
@@ -157,7 +156,8 @@ TEST(VolumePieces, PieceWithItsOwnRangeDerivesOtherMaterials)
   // translucent material with other templates, and lights its voxels differently.
   // Shown in per-sample mode, where the templates are the whole light model; the
   // transport volume's kernels here reach the template radius in both cases.
-  const auto whole = RenderOwnedPart(Volume(0), false, vtkScattererTemplateVolumeMapper::PER_SAMPLE);
+  const auto whole =
+    RenderOwnedPart(Volume(0), false, vtkScattererTemplateVolumeMapper::PER_SAMPLE);
   const auto piece =
     RenderOwnedPart(Volume(kPieceFrom), false, vtkScattererTemplateVolumeMapper::PER_SAMPLE);
   const Difference d = Compare(whole, piece);

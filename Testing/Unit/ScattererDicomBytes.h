@@ -30,7 +30,10 @@ public:
     this->Put16(uint16_t(v & 0xffff));
     this->Put16(uint16_t(v >> 16));
   }
-  void Raw(const std::vector<char>& bytes) { this->Bytes.insert(this->Bytes.end(), bytes.begin(), bytes.end()); }
+  void Raw(const std::vector<char>& bytes)
+  {
+    this->Bytes.insert(this->Bytes.end(), bytes.begin(), bytes.end());
+  }
   template <typename Iterator>
   void Raw(Iterator first, Iterator last)
   {
@@ -49,7 +52,10 @@ public:
     this->Put16(uint16_t(value.size()));
     this->Raw(value.begin(), value.end());
   }
-  void Text(uint16_t g, uint16_t e, const char* vr, const std::string& v) { this->Element(g, e, vr, v, ' '); }
+  void Text(uint16_t g, uint16_t e, const char* vr, const std::string& v)
+  {
+    this->Element(g, e, vr, v, ' ');
+  }
   void Uid(uint16_t g, uint16_t e, const std::string& v) { this->Element(g, e, "UI", v, 0); }
   void UShort(uint16_t g, uint16_t e, uint16_t v)
   {
@@ -58,7 +64,8 @@ public:
 
   void Write(const std::string& path) const
   {
-    std::ofstream(path, std::ios::binary).write(this->Bytes.data(), std::streamsize(this->Bytes.size()));
+    std::ofstream(path, std::ios::binary)
+      .write(this->Bytes.data(), std::streamsize(this->Bytes.size()));
   }
 
 private:

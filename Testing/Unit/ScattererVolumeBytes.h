@@ -85,9 +85,8 @@ struct Nifti1Fields
 inline std::string Nifti1Header(const Nifti1Fields& f)
 {
   std::string h(352, '\0');
-  auto put = [&](int offset, const void* value, std::size_t size) {
-    std::memcpy(&h[static_cast<std::size_t>(offset)], value, size);
-  };
+  auto put = [&](int offset, const void* value, std::size_t size)
+  { std::memcpy(&h[static_cast<std::size_t>(offset)], value, size); };
   const std::int32_t sizeofHdr = 348;
   const std::int16_t dim[8] = { 3, f.Dim[0], f.Dim[1], f.Dim[2], 1, 1, 1, 1 };
   const float pixdim[8] = { 1.0f, f.Pixdim[0], f.Pixdim[1], f.Pixdim[2], 0, 0, 0, 0 };
@@ -109,9 +108,8 @@ inline std::string Nifti2Header(
   const std::array<std::int64_t, 3>& size, const std::array<double, 3>& spacing)
 {
   std::string h(544, '\0');
-  auto put = [&](int offset, const void* value, std::size_t n) {
-    std::memcpy(&h[static_cast<std::size_t>(offset)], value, n);
-  };
+  auto put = [&](int offset, const void* value, std::size_t n)
+  { std::memcpy(&h[static_cast<std::size_t>(offset)], value, n); };
   const std::int32_t sizeofHdr = 540;
   const std::int16_t datatype = 4;
   const std::int16_t bitpix = 16;

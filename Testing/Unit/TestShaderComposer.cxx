@@ -36,10 +36,12 @@ Features PerSampleAllOn()
 
 TEST(ShaderComposer, PreprocessKeepsAndDropsBlocks)
 {
-  const std::string text = "a\n//ST::IF X\nb\n//ST::IF Y\nc\n//ST::ELSE\nd\n//ST::ENDIF\n//ST::ENDIF\ne @N@\n";
+  const std::string text =
+    "a\n//ST::IF X\nb\n//ST::IF Y\nc\n//ST::ELSE\nd\n//ST::ENDIF\n//ST::ENDIF\ne @N@\n";
   EXPECT_EQ(scatterer_shader::Preprocess(text, { { "X", true }, { "Y", true } }, { { "N", "7" } }),
     "a\nb\nc\ne 7\n");
-  EXPECT_EQ(scatterer_shader::Preprocess(text, { { "X", true } }, { { "N", "7" } }), "a\nb\nd\ne 7\n");
+  EXPECT_EQ(
+    scatterer_shader::Preprocess(text, { { "X", true } }, { { "N", "7" } }), "a\nb\nd\ne 7\n");
   EXPECT_EQ(scatterer_shader::Preprocess(text, { { "Y", true } }, {}), "a\ne @N@\n");
 }
 
@@ -116,8 +118,8 @@ TEST(ShaderComposer, PhongKeepsVtkShadingAndNormalizes)
 TEST(ShaderComposer, DescribeNamesTheFeatures)
 {
   Features f = PerSampleAllOn();
-  EXPECT_EQ(f.Describe(),
-    "per-sample lights=2 materials=2 shadow thin bleed boundary positional blend2");
+  EXPECT_EQ(
+    f.Describe(), "per-sample lights=2 materials=2 shadow thin bleed boundary positional blend2");
 }
 
 // Every distinct text is a program VTK keeps for the window's lifetime, so the

@@ -55,9 +55,8 @@ struct ProgressRecorder
   explicit ProgressRecorder(vtkAlgorithm* algorithm)
   {
     this->Command->SetClientData(this);
-    this->Command->SetCallback([](vtkObject*, unsigned long, void* client, void* call) {
-      static_cast<ProgressRecorder*>(client)->Values.push_back(*static_cast<double*>(call));
-    });
+    this->Command->SetCallback([](vtkObject*, unsigned long, void* client, void* call)
+      { static_cast<ProgressRecorder*>(client)->Values.push_back(*static_cast<double*>(call)); });
     this->Algorithm = algorithm;
     this->Tag = algorithm->AddObserver(vtkCommand::ProgressEvent, this->Command);
   }
@@ -127,8 +126,9 @@ void ExpectIdentical(vtkPolyData* a, vtkPolyData* b)
   auto* pa = vtkFloatArray::SafeDownCast(a->GetPoints()->GetData());
   auto* pb = vtkFloatArray::SafeDownCast(b->GetPoints()->GetData());
   ASSERT_TRUE(pa && pb);
-  EXPECT_EQ(0, std::memcmp(pa->GetPointer(0), pb->GetPointer(0),
-                 sizeof(float) * 3 * static_cast<std::size_t>(a->GetNumberOfPoints())));
+  EXPECT_EQ(0,
+    std::memcmp(pa->GetPointer(0), pb->GetPointer(0),
+      sizeof(float) * 3 * static_cast<std::size_t>(a->GetNumberOfPoints())));
   for (const char* name : { "Intensity", "TemplateId", "MaterialId" })
   {
     auto* xa = a->GetPointData()->GetArray(name);
@@ -136,8 +136,9 @@ void ExpectIdentical(vtkPolyData* a, vtkPolyData* b)
     ASSERT_TRUE(xa && xb) << name;
     ASSERT_EQ(xa->GetDataType(), xb->GetDataType()) << name;
     ASSERT_EQ(xa->GetNumberOfTuples(), xb->GetNumberOfTuples()) << name;
-    EXPECT_EQ(0, std::memcmp(xa->GetVoidPointer(0), xb->GetVoidPointer(0),
-                   static_cast<std::size_t>(xa->GetNumberOfTuples()) * xa->GetDataTypeSize()))
+    EXPECT_EQ(0,
+      std::memcmp(xa->GetVoidPointer(0), xb->GetVoidPointer(0),
+        static_cast<std::size_t>(xa->GetNumberOfTuples()) * xa->GetDataTypeSize()))
       << name;
   }
 }
@@ -370,13 +371,15 @@ TEST_F(TemplateSourceTest, AbortGivesAnEmptyOutputWithoutError)
 {
   auto source = SourceFor(scatterer::exampleTissueMaterials(), scatterer::GeneratorSettings());
   vtkNew<vtkCallbackCommand> abort;
-  abort->SetCallback([](vtkObject* caller, unsigned long, void*, void* call) {
-    const double progress = *static_cast<double*>(call);
-    if (progress > 0.0 && progress < 1.0)
+  abort->SetCallback(
+    [](vtkObject* caller, unsigned long, void*, void* call)
     {
-      static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
-    }
-  });
+      const double progress = *static_cast<double*>(call);
+      if (progress > 0.0 && progress < 1.0)
+      {
+        static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
+      }
+    });
   const unsigned long tag = source->AddObserver(vtkCommand::ProgressEvent, abort);
   vtkNew<vtkTest::ErrorObserver> errors;
   WatchErrors(source, errors);
@@ -466,7 +469,8 @@ TEST_F(TemplateSourceTest, LoadedTemplatesStayUntilSomethingChanges)
   other.seed = settings.seed + 1;
   scatterer::TemplateSet set;
   set.settings = settings; // claims the default seed ...
-  set.materials.push_back({ material, scatterer::generateTemplates(material, other) }); // ... but is not
+  set.materials.push_back(
+    { material, scatterer::generateTemplates(material, other) }); // ... but is not
   const std::string path = Path("foreign.scattpl");
   scatterer::saveTemplates(path, set);
 
@@ -477,8 +481,8 @@ TEST_F(TemplateSourceTest, LoadedTemplatesStayUntilSomethingChanges)
     vtkFloatArray::SafeDownCast(source->GetOutput()->GetPointData()->GetArray("Intensity"));
   ASSERT_TRUE(intensity);
   ASSERT_EQ(source->GetOutput()->GetNumberOfPoints(),
-    static_cast<vtkIdType>(set.materials[0].templates[0].photons.size() +
-      set.materials[0].templates[1].photons.size()));
+    static_cast<vtkIdType>(
+      set.materials[0].templates[0].photons.size() + set.materials[0].templates[1].photons.size()));
   EXPECT_EQ(Bits(intensity->GetValue(0)), Bits(set.materials[0].templates[0].photons[0].intensity));
 
   // Changing the material regenerates from the (new) inputs.
@@ -508,7 +512,8 @@ TEST_F(TemplateSourceTest, LoadingABadFileFailsWithAMessage)
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   ASSERT_GT(bytes.size(), 100u);
 
-  auto write = [this](const std::string& name, const std::string& data) {
+  auto write = [this](const std::string& name, const std::string& data)
+  {
     std::ofstream out(Path(name), std::ios::binary);
     out.write(data.data(), static_cast<std::streamsize>(data.size()));
     return Path(name);
@@ -524,8 +529,7 @@ TEST_F(TemplateSourceTest, LoadingABadFileFailsWithAMessage)
     { write("header-only.scattpl", bytes.substr(0, 20)), "truncated" },
     { write("empty.scattpl", ""), "truncated" },
     { write("garbage.scattpl", std::string(300, '\x5a')), "bad magic" },
-    { write("corrupt.scattpl",
-        bytes.substr(0, 200) + char(bytes[200] ^ 0x40) + bytes.substr(201)),
+    { write("corrupt.scattpl", bytes.substr(0, 200) + char(bytes[200] ^ 0x40) + bytes.substr(201)),
       "(at byte" },
   };
   vtkNew<vtkTest::ErrorObserver> errors;
@@ -595,8 +599,7 @@ TEST_F(TemplateSourceTest, InvalidMaterialIsAnErrorNotACrash)
     errors->Clear();
     c.Break();
     EXPECT_EQ(source->GetExecutive()->Update(), 0) << "the update must report the failure";
-    EXPECT_TRUE(ErrorMentions(errors, c.Mention))
-      << c.Mention << ": " << errors->GetErrorMessage();
+    EXPECT_TRUE(ErrorMentions(errors, c.Mention)) << c.Mention << ": " << errors->GetErrorMessage();
     EXPECT_TRUE(ErrorMentions(errors, "material 1")) << errors->GetErrorMessage();
     EXPECT_EQ(source->GetOutput()->GetNumberOfPoints(), 0);
     EXPECT_EQ(source->GetNumberOfTemplates(), 0);
@@ -663,4 +666,3 @@ TEST(ScattererTemplateSourceSettings, DefaultsClampAndNaN)
   EXPECT_TRUE(ErrorMentions(errors, "SetLatticeCell")) << errors->GetErrorMessage();
   EXPECT_EQ(s->GetLatticeCell(), core.latticeCell);
 }
-

@@ -105,7 +105,8 @@ protected:
     std::string error;
     auto image = vtkScattererVolumeReader::ReadVolume(path, &error);
     EXPECT_FALSE(image) << path << " should be refused";
-    EXPECT_NE(error.find("'" + path + "'"), std::string::npos) << "message lacks the path: " << error;
+    EXPECT_NE(error.find("'" + path + "'"), std::string::npos)
+      << "message lacks the path: " << error;
     EXPECT_EQ(error.find('\n'), std::string::npos) << "message is not one line: " << error;
     for (const std::string& fragment : fragments)
     {
@@ -159,17 +160,17 @@ TEST_F(VolumeHeaderTest, MetaImageHugeChannelCountIsRefused)
 TEST_F(VolumeHeaderTest, NrrdDimensionFiveWithThreeSizesIsRefused)
 {
   // VTK: SIGSEGV in vtkNrrdReader::RequestData.
-  ExpectRefused(Write("v.nrrd",
-                  NrrdHeader("type: short\ndimension: 5\nsizes: 11 5 3\nencoding: raw\n") +
-                    RawShorts()),
+  ExpectRefused(
+    Write("v.nrrd",
+      NrrdHeader("type: short\ndimension: 5\nsizes: 11 5 3\nencoding: raw\n") + RawShorts()),
     { "dimension", "5" });
 }
 
 TEST_F(VolumeHeaderTest, NrrdSizesMustMatchTheDimension)
 {
-  ExpectRefused(Write("v.nrrd",
-                  NrrdHeader("type: short\ndimension: 3\nsizes: 11 5\nencoding: raw\n") +
-                    RawShorts()),
+  ExpectRefused(
+    Write("v.nrrd",
+      NrrdHeader("type: short\ndimension: 3\nsizes: 11 5\nencoding: raw\n") + RawShorts()),
     { "sizes", "2 entries", "dimension is 3" });
 }
 
@@ -182,8 +183,7 @@ TEST_F(VolumeHeaderTest, NiftiUnknownDatatypeIsRefused)
 TEST_F(VolumeHeaderTest, GzippedNiftiUnknownDatatypeIsRefused)
 {
   // The header of a .nii.gz is inside the gzip stream: it is decoded to be checked.
-  ExpectRefused(Write("v.nii.gz", Gzip(NiftiHeader(1536, 128) + RawShorts())),
-    { "datatype 1536" });
+  ExpectRefused(Write("v.nii.gz", Gzip(NiftiHeader(1536, 128) + RawShorts())), { "datatype 1536" });
 }
 
 // ---------------------------------------------------------------------------------------
@@ -225,8 +225,8 @@ TEST_F(VolumeHeaderTest, MetaImageHeaderSizePastTheDataIsRefused)
 {
   // VTK: drawn from data shifted by 100 bytes, its tail past the end of the file.
   Write("v.raw", RawShorts());
-  ExpectRefused(Write("v.mhd", MetaHeader("HeaderSize = 100\n")),
-    { "HeaderSize (100)", "truncated" });
+  ExpectRefused(
+    Write("v.mhd", MetaHeader("HeaderSize = 100\n")), { "HeaderSize (100)", "truncated" });
 }
 
 TEST_F(VolumeHeaderTest, MetaImageHeaderSizeIsHonoured)
@@ -241,7 +241,8 @@ TEST_F(VolumeHeaderTest, MetaImageHeaderSizeIsHonoured)
 TEST_F(VolumeHeaderTest, MetaImageHeaderSizeMinusOneNeedsTheWholeVolume)
 {
   Write("v.raw", RawShorts(Voxels - 1));
-  ExpectRefused(Write("v.mhd", MetaHeader("HeaderSize = -1\n")), { "HeaderSize = -1", "truncated" });
+  ExpectRefused(
+    Write("v.mhd", MetaHeader("HeaderSize = -1\n")), { "HeaderSize = -1", "truncated" });
 }
 
 TEST_F(VolumeHeaderTest, NrrdAsciiJunkIsRefused)
@@ -262,8 +263,7 @@ TEST_F(VolumeHeaderTest, NrrdAsciiShortOfNumbersIsRefused)
 TEST_F(VolumeHeaderTest, NrrdAsciiAfterTheHeaderIsRefused)
 {
   // VTK reads ascii from the start of the file, header included: every voxel 0.
-  ExpectRefused(
-    Write("v.nrrd", NrrdHeader(NrrdShort3D + "encoding: ascii\n") + AsciiShorts()),
+  ExpectRefused(Write("v.nrrd", NrrdHeader(NrrdShort3D + "encoding: ascii\n") + AsciiShorts()),
     { "ascii data after the header" });
 }
 
@@ -337,10 +337,10 @@ TEST_F(VolumeHeaderTest, NiftiBadPixdimIsRefused)
 TEST_F(VolumeHeaderTest, AbsurdOriginIsRefused)
 {
   Write("v.raw", RawShorts());
-  ExpectRefused(Write("far.mhd", MetaHeader("Offset = 1e30 0 0\n")),
-    { "origin along x is 1e+30", "2^24" });
-  ExpectRefused(Write("huge.mhd", MetaHeader("Offset = 0 1e999 0\n")),
-    { "origin along y is inf", "finite" });
+  ExpectRefused(
+    Write("far.mhd", MetaHeader("Offset = 1e30 0 0\n")), { "origin along x is 1e+30", "2^24" });
+  ExpectRefused(
+    Write("huge.mhd", MetaHeader("Offset = 0 1e999 0\n")), { "origin along y is inf", "finite" });
   ExpectRefused(
     Write("far.nrrd",
       NrrdHeader(NrrdShort3D + "space origin: (0,0,-1e30)\nencoding: raw\n") + RawShorts()),
@@ -356,9 +356,9 @@ TEST_F(VolumeHeaderTest, TruncatedGzipNrrdSaysSo)
 {
   // VTK said only ": 81" (the end of "..., GetHeaderSize(): 81").
   const std::string gz = Gzip(RawShorts());
-  ExpectRefused(Write("v.nrrd",
-                  NrrdHeader(NrrdShort3D + "encoding: gzip\nendian: little\n") +
-                    gz.substr(0, gz.size() / 2)),
+  ExpectRefused(
+    Write("v.nrrd",
+      NrrdHeader(NrrdShort3D + "encoding: gzip\nendian: little\n") + gz.substr(0, gz.size() / 2)),
     { "gzip data is truncated" });
 }
 
@@ -366,8 +366,7 @@ TEST_F(VolumeHeaderTest, CorruptGzipNrrdSaysSo)
 {
   std::string gz = Gzip(RawShorts());
   gz[12] = static_cast<char>(gz[12] ^ 0x5a); // the stored block's length no longer checks
-  ExpectRefused(
-    Write("v.nrrd", NrrdHeader(NrrdShort3D + "encoding: gzip\nendian: little\n") + gz),
+  ExpectRefused(Write("v.nrrd", NrrdHeader(NrrdShort3D + "encoding: gzip\nendian: little\n") + gz),
     { "gzip data is corrupt" });
 }
 
@@ -420,8 +419,7 @@ TEST_F(VolumeHeaderTest, NrrdDetachedGzipLargerThanTheVoxelsIsRefused)
   // Stored blocks make the gzip file 18 bytes larger than the voxels; VTK then skips
   // 18 bytes of it and reads the rest as raw data.
   Write("v.raw.gz", Gzip(RawShorts()));
-  ExpectRefused(
-    Write("v.nhdr", NrrdHeader(NrrdShort3D + "encoding: gzip\ndata file: v.raw.gz\n")),
+  ExpectRefused(Write("v.nhdr", NrrdHeader(NrrdShort3D + "encoding: gzip\ndata file: v.raw.gz\n")),
     { "larger than the 330 bytes", "skip" });
 }
 
@@ -450,14 +448,14 @@ TEST_F(VolumeHeaderTest, NrrdWithOneAxisInSpaceIsRefused)
   // VTK 9.1 then reads raw data from a stream it never opened (SIGSEGV); ascii data of
   // one axis stays 0.
   Write("v.raw", RawShorts(8));
-  ExpectRefused(
-    Write("v.nhdr", NrrdHeader("type: short\ndimension: 2\nsizes: 2 4\nencoding: raw\n"
-                               "data file: v.raw\n")),
+  ExpectRefused(Write("v.nhdr",
+                  NrrdHeader("type: short\ndimension: 2\nsizes: 2 4\nencoding: raw\n"
+                             "data file: v.raw\n")),
     { "1 axis in space", "first axis as values per voxel" });
   Write("v.txt", AsciiShorts(20));
-  ExpectRefused(
-    Write("a.nhdr", NrrdHeader("type: short\ndimension: 1\nsizes: 20\nencoding: ascii\n"
-                               "data file: v.txt\n")),
+  ExpectRefused(Write("a.nhdr",
+                  NrrdHeader("type: short\ndimension: 1\nsizes: 20\nencoding: ascii\n"
+                             "data file: v.txt\n")),
     { "1 axis in space" });
 }
 
@@ -501,11 +499,11 @@ TEST_F(VolumeHeaderTest, MetaImageLongIsRefused)
     ints.append(reinterpret_cast<const char*>(&v), 4);
   }
   Write("v.raw", ints);
-  ExpectRefused(
-    Write("v.mhd", "NDims = 3\nDimSize = 11 5 3\nElementType = MET_LONG\nElementDataFile = v.raw\n"),
+  ExpectRefused(Write("v.mhd",
+                  "NDims = 3\nDimSize = 11 5 3\nElementType = MET_LONG\nElementDataFile = v.raw\n"),
     { "MET_LONG", "half the volume" });
-  ExpectVolume(
-    Write("int.mhd", "NDims = 3\nDimSize = 11 5 3\nElementType = MET_INT\nElementDataFile = v.raw\n"));
+  ExpectVolume(Write(
+    "int.mhd", "NDims = 3\nDimSize = 11 5 3\nElementType = MET_INT\nElementDataFile = v.raw\n"));
 }
 
 TEST_F(VolumeHeaderTest, DataSplitOverSeveralFilesIsRefused)
@@ -522,28 +520,35 @@ TEST_F(VolumeHeaderTest, DataSplitOverSeveralFilesIsRefused)
 TEST_F(VolumeHeaderTest, NiftiWithSeparateImageMagicIsRefused)
 {
   // Magic "ni1" (voxels in a .img file) in a .nii: VTK would read the header as voxels.
-  ExpectRefused(Write("v.nii", NiftiHeader(4, 16, { 1, 1, 1 }, "ni1") + RawShorts()),
-    { "'ni1'", ".img" });
+  ExpectRefused(
+    Write("v.nii", NiftiHeader(4, 16, { 1, 1, 1 }, "ni1") + RawShorts()), { "'ni1'", ".img" });
 }
 
 TEST_F(VolumeHeaderTest, ValidVariantsAreRead)
 {
   // The checks must not refuse what VTK reads right.
   Write("v.raw", RawShorts());
-  ExpectVolume(Write("colon.mhd",
-    "NDims: 3\nDimSize: 11 5 3\nElementType: MET_SHORT_ARRAY\nElementSpacing: 0.5 1 1\n"
-    "ElementDataFile: v.raw\n"), 0.5);
+  ExpectVolume(
+    Write("colon.mhd",
+      "NDims: 3\nDimSize: 11 5 3\nElementType: MET_SHORT_ARRAY\nElementSpacing: 0.5 1 1\n"
+      "ElementDataFile: v.raw\n"),
+    0.5);
   ExpectVolume(Write("local.mha", MetaHeader("BinaryData = True\n", "LOCAL") + RawShorts()));
-  ExpectVolume(Write("crlf.nrrd",
-    "NRRD0004\r\ntype: short\r\ndimension: 3\r\nsizes: 11 5 3\r\nspacings: 0.25 1 1\r\n"
-    "encoding: raw\r\nendian: little\r\n\r\n" + RawShorts()), 0.25);
+  ExpectVolume(
+    Write("crlf.nrrd",
+      "NRRD0004\r\ntype: short\r\ndimension: 3\r\nsizes: 11 5 3\r\nspacings: 0.25 1 1\r\n"
+      "encoding: raw\r\nendian: little\r\n\r\n" +
+        RawShorts()),
+    0.25);
   ExpectVolume(Write("dirs.nrrd",
-    NrrdHeader(NrrdShort3D + "space: left-posterior-superior\n"
-                             "space directions: (-2,0,0) (0,1,0) (0,0,1)\n"
-                             "space origin: (-120.5, 30, 7)\nencoding: raw\nendian: little\n") +
-      RawShorts()), 2.0);
-  ExpectVolume(Write("gz.nrrd",
-    NrrdHeader(NrrdShort3D + "encoding: gzip\nendian: little\n") + Gzip(RawShorts())));
+                 NrrdHeader(NrrdShort3D +
+                   "space: left-posterior-superior\n"
+                   "space directions: (-2,0,0) (0,1,0) (0,0,1)\n"
+                   "space origin: (-120.5, 30, 7)\nencoding: raw\nendian: little\n") +
+                   RawShorts()),
+    2.0);
+  ExpectVolume(Write(
+    "gz.nrrd", NrrdHeader(NrrdShort3D + "encoding: gzip\nendian: little\n") + Gzip(RawShorts())));
   ExpectVolume(Write("v.nii", NiftiHeader() + RawShorts()));
   ExpectVolume(Write("v.nii.gz", Gzip(NiftiHeader() + RawShorts())));
 }

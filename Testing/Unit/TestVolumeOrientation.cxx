@@ -121,7 +121,7 @@ struct DicomSlice
   bool Rescale = false;
   std::string Slope = "1", Intercept = "0";
   std::string TransferSyntax = "1.2.840.10008.1.2.1";
-  bool Encapsulated = false; // pixel data as RLE fragments (PS3.5 Annex G)
+  bool Encapsulated = false;     // pixel data as RLE fragments (PS3.5 Annex G)
   std::vector<uint8_t> Fragment; // when set, sent as the only fragment instead of RLE
 };
 
@@ -214,10 +214,16 @@ void WriteDicomSlice(const std::string& path, int s, const DicomSlice& spec)
     }
     bytes.Raw({ 'O', 'B', 0, 0 });
     bytes.Put32(0xFFFFFFFFu);
-    bytes.Put16(0xFFFE); bytes.Put16(0xE000); bytes.Put32(0); // empty basic offset table
-    bytes.Put16(0xFFFE); bytes.Put16(0xE000); bytes.Put32(uint32_t(fragment.size()));
+    bytes.Put16(0xFFFE);
+    bytes.Put16(0xE000);
+    bytes.Put32(0); // empty basic offset table
+    bytes.Put16(0xFFFE);
+    bytes.Put16(0xE000);
+    bytes.Put32(uint32_t(fragment.size()));
     bytes.Raw(fragment.begin(), fragment.end());
-    bytes.Put16(0xFFFE); bytes.Put16(0xE0DD); bytes.Put32(0);
+    bytes.Put16(0xFFFE);
+    bytes.Put16(0xE0DD);
+    bytes.Put32(0);
   }
   bytes.Write(path);
 }
@@ -288,13 +294,15 @@ TEST_F(VolumeOrientationTest, DicomRescaleGivesHounsfieldUnits)
 {
   if (!HasVtkDicom())
     GTEST_SKIP() << vtkScattererVolumeReader::GetDicomSupport();
-  WriteSagittalSeries(Path("ct"), [](int s) {
-    DicomSlice spec = Sagittal(s);
-    spec.Rescale = true;
-    spec.Slope = "2";
-    spec.Intercept = "-1024";
-    return spec;
-  });
+  WriteSagittalSeries(Path("ct"),
+    [](int s)
+    {
+      DicomSlice spec = Sagittal(s);
+      spec.Rescale = true;
+      spec.Slope = "2";
+      spec.Intercept = "-1024";
+      return spec;
+    });
   auto image = Read(Path("ct"));
   ASSERT_TRUE(image);
   // Stored 0 is -1024 HU: the values must come out negative, in a signed type.
@@ -306,13 +314,15 @@ TEST_F(VolumeOrientationTest, DicomFractionalRescaleGivesFloats)
 {
   if (!HasVtkDicom())
     GTEST_SKIP() << vtkScattererVolumeReader::GetDicomSupport();
-  WriteSagittalSeries(Path("ct"), [](int s) {
-    DicomSlice spec = Sagittal(s);
-    spec.Rescale = true;
-    spec.Slope = "0.5";
-    spec.Intercept = "-1000";
-    return spec;
-  });
+  WriteSagittalSeries(Path("ct"),
+    [](int s)
+    {
+      DicomSlice spec = Sagittal(s);
+      spec.Rescale = true;
+      spec.Slope = "0.5";
+      spec.Intercept = "-1000";
+      return spec;
+    });
   auto image = Read(Path("ct"));
   ASSERT_TRUE(image);
   EXPECT_TRUE(image->GetScalarType() == VTK_FLOAT || image->GetScalarType() == VTK_DOUBLE);
@@ -323,12 +333,14 @@ TEST_F(VolumeOrientationTest, RleCompressedDicomSeriesReads)
 {
   if (!HasVtkDicom())
     GTEST_SKIP() << vtkScattererVolumeReader::GetDicomSupport();
-  WriteSagittalSeries(Path("rle"), [](int s) {
-    DicomSlice spec = Sagittal(s);
-    spec.TransferSyntax = "1.2.840.10008.1.2.5"; // RLE Lossless
-    spec.Encapsulated = true;
-    return spec;
-  });
+  WriteSagittalSeries(Path("rle"),
+    [](int s)
+    {
+      DicomSlice spec = Sagittal(s);
+      spec.TransferSyntax = "1.2.840.10008.1.2.5"; // RLE Lossless
+      spec.Encapsulated = true;
+      return spec;
+    });
   ExpectPlaced(Read(Path("rle")), SagittalWorld);
 }
 
@@ -361,13 +373,15 @@ TEST_F(VolumeOrientationTest, CompressedDicomSeriesRead)
 // A transfer syntax nothing here decodes (MPEG-2 video) fails in one line.
 TEST_F(VolumeOrientationTest, UnsupportedTransferSyntaxFailsInOneLine)
 {
-  WriteSagittalSeries(Path("mpeg"), [](int s) {
-    DicomSlice spec = Sagittal(s);
-    spec.TransferSyntax = "1.2.840.10008.1.2.4.100"; // MPEG2 Main Profile @ Main Level
-    spec.Encapsulated = true;
-    spec.Fragment = { 0x00, 0x00, 0x01, 0xB3, 0x00, 0x00, 0x00, 0x00 };
-    return spec;
-  });
+  WriteSagittalSeries(Path("mpeg"),
+    [](int s)
+    {
+      DicomSlice spec = Sagittal(s);
+      spec.TransferSyntax = "1.2.840.10008.1.2.4.100"; // MPEG2 Main Profile @ Main Level
+      spec.Encapsulated = true;
+      spec.Fragment = { 0x00, 0x00, 0x01, 0xB3, 0x00, 0x00, 0x00, 0x00 };
+      return spec;
+    });
   const std::string error = ReadError(Path("mpeg"));
   EXPECT_NE(error.find("1.2.840.10008.1.2.4.100"), std::string::npos) << error;
   std::cout << "message: " << error << "\n";
@@ -384,14 +398,16 @@ TEST_F(VolumeOrientationTest, CorruptJpegStreamFailsInOneLineInsteadOfAborting)
 {
   if (!HasVtkDicom())
     GTEST_SKIP() << vtkScattererVolumeReader::GetDicomSupport();
-  WriteSagittalSeries(Path("jpeg"), [](int s) {
-    DicomSlice spec = Sagittal(s);
-    spec.TransferSyntax = "1.2.840.10008.1.2.4.70"; // JPEG lossless, first-order prediction
-    spec.Encapsulated = true;
-    // SOI, then a lossless frame header (SOF3) cut off after its length.
-    spec.Fragment = { 0xFF, 0xD8, 0xFF, 0xC3, 0x00, 0x0B, 0x10, 0x00 };
-    return spec;
-  });
+  WriteSagittalSeries(Path("jpeg"),
+    [](int s)
+    {
+      DicomSlice spec = Sagittal(s);
+      spec.TransferSyntax = "1.2.840.10008.1.2.4.70"; // JPEG lossless, first-order prediction
+      spec.Encapsulated = true;
+      // SOI, then a lossless frame header (SOF3) cut off after its length.
+      spec.Fragment = { 0xFF, 0xD8, 0xFF, 0xC3, 0x00, 0x0B, 0x10, 0x00 };
+      return spec;
+    });
   const std::string error = ReadError(Path("jpeg"));
   std::cout << "message: " << error << "\n";
   EXPECT_EQ(error.rfind("Cannot read DICOM series volume '" + Path("jpeg") + "': ", 0), 0u)
@@ -447,9 +463,8 @@ struct NiftiSpec
 void WriteNifti(const std::string& path, const NiftiSpec& spec)
 {
   std::vector<char> header(352, 0);
-  auto at = [&](size_t offset, const void* value, size_t size) {
-    std::memcpy(header.data() + offset, value, size);
-  };
+  auto at = [&](size_t offset, const void* value, size_t size)
+  { std::memcpy(header.data() + offset, value, size); };
   const int32_t sizeofHdr = 348;
   at(0, &sizeofHdr, 4);
   const int16_t dim[8] = { 3, COLS, ROWS, SLICES, 1, 1, 1, 1 };
@@ -498,7 +513,8 @@ Vec3 QFormWorld(const NiftiSpec& spec, int i, int j, int k)
 {
   const double b = spec.Quatern[0], c = spec.Quatern[1], d = spec.Quatern[2];
   const double a = std::sqrt(std::max(0.0, 1.0 - b * b - c * c - d * d));
-  const double R[3][3] = { { a * a + b * b - c * c - d * d, 2 * b * c - 2 * a * d, 2 * b * d + 2 * a * c },
+  const double R[3][3] = { { a * a + b * b - c * c - d * d, 2 * b * c - 2 * a * d,
+                             2 * b * d + 2 * a * c },
     { 2 * b * c + 2 * a * d, a * a + c * c - b * b - d * d, 2 * c * d - 2 * a * b },
     { 2 * b * d - 2 * a * c, 2 * c * d + 2 * a * b, a * a + d * d - c * c - b * b } };
   const double v[3] = { spec.PixDim[0] * i, spec.PixDim[1] * j, spec.QFac * spec.PixDim[2] * k };
@@ -552,7 +568,8 @@ TEST_F(VolumeOrientationTest, NiftiSFormWinsOverQForm)
   std::copy(q.Quatern, q.Quatern + 3, spec.Quatern);
   std::copy(q.QOffset, q.QOffset + 3, spec.QOffset);
   WriteNifti(Path("sq.nii"), spec);
-  ExpectPlaced(Read(Path("sq.nii")), [&](int i, int j, int k) { return SFormWorld(spec, i, j, k); });
+  ExpectPlaced(
+    Read(Path("sq.nii")), [&](int i, int j, int k) { return SFormWorld(spec, i, j, k); });
 }
 
 TEST_F(VolumeOrientationTest, NiftiQFormOnlyIsApplied)
@@ -576,9 +593,10 @@ TEST_F(VolumeOrientationTest, NiftiWithoutFormsStaysOnTheGrid)
 {
   NiftiSpec spec;
   WriteNifti(Path("plain.nii"), spec);
-  ExpectPlaced(Read(Path("plain.nii")), [&](int i, int j, int k) {
-    return Vec3{ 0.5 * i, 0.75 * j, 2.0 * k };
-  });
+  ExpectPlaced(Read(Path("plain.nii")),
+    [&](int i, int j, int k) {
+      return Vec3{ 0.5 * i, 0.75 * j, 2.0 * k };
+    });
 }
 
 TEST_F(VolumeOrientationTest, NiftiShearedSFormIsRefused)
@@ -599,7 +617,8 @@ TEST_F(VolumeOrientationTest, NiftiShearedSFormFallsBackToQForm)
   const float rows[3][4] = { { 0.5f, 0, 1, 0 }, { 0, 0.75f, 0, 0 }, { 0, 0, 2, 0 } };
   std::memcpy(spec.SRow, rows, sizeof(rows));
   WriteNifti(Path("shear.nii"), spec);
-  ExpectPlaced(Read(Path("shear.nii")), [&](int i, int j, int k) { return QFormWorld(spec, i, j, k); });
+  ExpectPlaced(
+    Read(Path("shear.nii")), [&](int i, int j, int k) { return QFormWorld(spec, i, j, k); });
 }
 
 // The same anatomy from both formats lands on the same points: the sagittal DICOM series

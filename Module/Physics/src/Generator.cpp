@@ -73,8 +73,8 @@ double distanceToSphere(const glm::dvec3& p, const glm::dvec3& d)
 
 } // namespace
 
-Template generateTemplate(const Material& material, const GeneratorSettings& settings,
-  int templateIndex)
+Template generateTemplate(
+  const Material& material, const GeneratorSettings& settings, int templateIndex)
 {
   material.validate();
   settings.validate();
@@ -247,8 +247,7 @@ Template generateTemplate(const Material& material, const GeneratorSettings& set
   return out;
 }
 
-std::vector<Template> generateTemplates(const Material& material,
-  const GeneratorSettings& settings)
+std::vector<Template> generateTemplates(const Material& material, const GeneratorSettings& settings)
 {
   settings.validate();
   std::vector<Template> templates;
@@ -265,8 +264,8 @@ std::uint64_t materialSeed(std::uint64_t seed, int materialIndex)
   return mix.next();
 }
 
-std::vector<std::vector<Template>> generateAllTemplates(const std::vector<Material>& materials,
-  const GeneratorSettings& settings)
+std::vector<std::vector<Template>> generateAllTemplates(
+  const std::vector<Material>& materials, const GeneratorSettings& settings)
 {
   std::vector<std::vector<Template>> all;
   all.reserve(materials.size());

@@ -14,7 +14,8 @@ void requireInt(const char* what, int value, int lo, int hi)
 {
   if (value < lo || value > hi) {
     throw std::invalid_argument(std::string("GeneratorSettings: ") + what + " must be in [" +
-      std::to_string(lo) + ", " + std::to_string(hi) + "], got " + std::to_string(value));
+                                std::to_string(lo) + ", " + std::to_string(hi) + "], got " +
+                                std::to_string(value));
   }
 }
 
@@ -23,8 +24,8 @@ void requireOpenClosed(const char* what, double value, double lo, double hi)
 {
   if (!(std::isfinite(value) && value > lo && value <= hi)) {
     throw std::invalid_argument(std::string("GeneratorSettings: ") + what +
-      " must be a finite number in (" + detail::describe(lo) + ", " + detail::describe(hi) +
-      "], got " + detail::describe(value));
+                                " must be a finite number in (" + detail::describe(lo) + ", " +
+                                detail::describe(hi) + "], got " + detail::describe(value));
   }
 }
 
@@ -38,8 +39,9 @@ void GeneratorSettings::validate() const
   requireOpenClosed("stepLength", stepLength, 0.0, 1.0);
   if (!(std::isfinite(latticeCell) && latticeCell >= kMinLatticeCell && latticeCell <= 1.0)) {
     throw std::invalid_argument(std::string("GeneratorSettings: latticeCell must be a finite "
-      "number in [") + detail::describe(kMinLatticeCell) + ", 1], got " +
-      detail::describe(latticeCell));
+                                            "number in [") +
+                                detail::describe(kMinLatticeCell) + ", 1], got " +
+                                detail::describe(latticeCell));
   }
   requireInt("maxPhotonsPerTemplate", maxPhotonsPerTemplate, 1, kMaxPhotonsCap);
   requireInt("maxEventsPerTemplate", maxEventsPerTemplate, 1, kMaxEventsCap);

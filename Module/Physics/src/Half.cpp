@@ -18,7 +18,7 @@ std::uint16_t floatToHalf(float value)
     return static_cast<std::uint16_t>(sign | 0x7C00u);
   }
   const std::uint32_t exponent = absx >> 23u;
-  if (exponent < 113u) { // below 2^-14: a subnormal half, or zero
+  if (exponent < 113u) {   // below 2^-14: a subnormal half, or zero
     if (exponent < 102u) { // below 2^-25: rounds to zero
       return sign;
     }

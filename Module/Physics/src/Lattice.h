@@ -15,12 +15,7 @@ namespace detail {
 
 class Lattice {
 public:
-  explicit Lattice(double cell)
-    : invCell_(1.0 / cell)
-    , keys_(256, 0)
-    , values_(256, -1)
-  {
-  }
+  explicit Lattice(double cell) : invCell_(1.0 / cell), keys_(256, 0), values_(256, -1) {}
 
   // Cell indices fit in 21 bits: |p| < 1 and cell >= 1e-4 give |i| <= 10001 < 2^20.
   // The offset keeps every field positive, so key 0 never occurs and marks empty slots.

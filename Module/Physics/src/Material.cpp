@@ -19,7 +19,8 @@ void requireRange(const Material& m, const char* what, double value, double lo, 
 {
   if (!(std::isfinite(value) && value >= lo && value <= hi)) {
     throw std::invalid_argument(prefix(m) + what + " must be a finite number in [" +
-      detail::describe(lo) + ", " + detail::describe(hi) + "], got " + detail::describe(value));
+                                detail::describe(lo) + ", " + detail::describe(hi) + "], got " +
+                                detail::describe(value));
   }
 }
 
@@ -62,8 +63,7 @@ void Material::validate() const
       "Material: name must not contain a NUL byte, found one at name byte " + std::to_string(nul));
   }
   requireRange(*this, "opacity", opacity, 0.0, 1.0);
-  requireRange(*this, "refractiveIndex", refractiveIndex, kMinRefractiveIndex,
-    kMaxRefractiveIndex);
+  requireRange(*this, "refractiveIndex", refractiveIndex, kMinRefractiveIndex, kMaxRefractiveIndex);
   const char* channel[3] = { "diffuse.r", "diffuse.g", "diffuse.b" };
   for (int c = 0; c < 3; ++c) {
     requireRange(*this, channel[c], static_cast<double>(diffuse[c]), 0.0, 1.0);
@@ -76,11 +76,13 @@ void Material::validate() const
   } else if (selector.kind == Selector::Kind::ScalarRange) {
     if (!std::isfinite(selector.lo) || !std::isfinite(selector.hi)) {
       throw std::invalid_argument(prefix(*this) + "selector range must be finite, got [" +
-        detail::describe(selector.lo) + ", " + detail::describe(selector.hi) + "]");
+                                  detail::describe(selector.lo) + ", " +
+                                  detail::describe(selector.hi) + "]");
     }
     if (selector.lo > selector.hi) {
       throw std::invalid_argument(prefix(*this) + "selector range needs lo <= hi, got [" +
-        detail::describe(selector.lo) + ", " + detail::describe(selector.hi) + "]");
+                                  detail::describe(selector.lo) + ", " +
+                                  detail::describe(selector.hi) + "]");
     }
   } else {
     throw std::invalid_argument(prefix(*this) + "selector kind is not ScalarRange or Label");

@@ -18,7 +18,8 @@ PackedTemplates packTemplates(const std::vector<std::vector<Template>>& perMater
 {
   if (maxPhotonsPerTemplate < 1 || maxPhotonsPerTemplate > kMaxPackWidth) {
     throw std::invalid_argument("packTemplates: maxPhotonsPerTemplate must be in [1, " +
-      std::to_string(kMaxPackWidth) + "], got " + std::to_string(maxPhotonsPerTemplate));
+                                std::to_string(kMaxPackWidth) + "], got " +
+                                std::to_string(maxPhotonsPerTemplate));
   }
   std::size_t rows = 0;
   for (const auto& templates : perMaterial) {
@@ -26,7 +27,7 @@ PackedTemplates packTemplates(const std::vector<std::vector<Template>>& perMater
   }
   if (rows > static_cast<std::size_t>(kMaxPackWidth)) {
     throw std::invalid_argument("packTemplates: at most " + std::to_string(kMaxPackWidth) +
-      " templates fit in one texture, got " + std::to_string(rows));
+                                " templates fit in one texture, got " + std::to_string(rows));
   }
 
   PackedTemplates packed;
@@ -65,9 +66,9 @@ PackedTemplates packTemplates(const std::vector<std::vector<Template>>& perMater
       int count = 0;
       for (std::size_t j = 0; j < t.photons.size(); ++j) {
         const Photon& p = t.photons[j];
-        const bool fits = j < cap &&
-          (format == TexelFormat::RGBA32F ? p.intensity > 0.0f
-                                          : halfToFloat(floatToHalf(p.intensity)) > 0.0f);
+        const bool fits = j < cap && (format == TexelFormat::RGBA32F
+                                         ? p.intensity > 0.0f
+                                         : halfToFloat(floatToHalf(p.intensity)) > 0.0f);
         if (!fits || count != static_cast<int>(j)) {
           truncated += p.intensity; // a 0 ends the row on the GPU: nothing after it counts
           continue;

@@ -15,9 +15,8 @@ namespace {
 void requireIndex(const char* what, double n)
 {
   if (!(std::isfinite(n) && n > 0.0)) {
-    throw std::invalid_argument(
-      std::string("Snell: refractive index ") + what + " must be finite and > 0, got " +
-      detail::describe(n));
+    throw std::invalid_argument(std::string("Snell: refractive index ") + what +
+                                " must be finite and > 0, got " + detail::describe(n));
   }
 }
 
@@ -52,8 +51,8 @@ std::optional<double> cosCriticalAngle(double n1, double n2)
   return std::sqrt((1.0 - r) * (1.0 + r));
 }
 
-std::optional<glm::dvec3> refract(const glm::dvec3& dir, const glm::dvec3& normal, double n1,
-  double n2)
+std::optional<glm::dvec3> refract(
+  const glm::dvec3& dir, const glm::dvec3& normal, double n1, double n2)
 {
   requireIndex("n1", n1);
   requireIndex("n2", n2);
@@ -76,8 +75,8 @@ std::optional<glm::dvec3> refract(const glm::dvec3& dir, const glm::dvec3& norma
   return glm::normalize(eta * dir + (eta * cosI - cosT) * n);
 }
 
-std::optional<glm::vec3> refract(const glm::vec3& dir, const glm::vec3& normal, double n1,
-  double n2)
+std::optional<glm::vec3> refract(
+  const glm::vec3& dir, const glm::vec3& normal, double n1, double n2)
 {
   requireIndex("n1", n1);
   requireIndex("n2", n2);

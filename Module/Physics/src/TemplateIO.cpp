@@ -59,7 +59,7 @@ std::string templateProblem(const Template& t)
     const Photon& p = t.photons[j];
     const glm::vec3& x = p.position;
     if (!std::isfinite(x.x) || !std::isfinite(x.y) || !std::isfinite(x.z) ||
-      !std::isfinite(p.intensity)) {
+        !std::isfinite(p.intensity)) {
       return "photon " + std::to_string(j) + " has a non-finite value";
     }
     if (!(p.intensity > 0.0f)) {
@@ -110,9 +110,7 @@ public:
 class Reader {
 public:
   Reader(const std::uint8_t* data, std::size_t size, std::string source)
-    : data_(data)
-    , size_(size)
-    , source_(std::move(source))
+      : data_(data), size_(size), source_(std::move(source))
   {
   }
 
@@ -130,7 +128,7 @@ public:
   {
     if (n > remaining()) {
       fail(std::string("truncated: ") + what + " needs " + std::to_string(n) + " bytes, " +
-        std::to_string(remaining()) + " left");
+           std::to_string(remaining()) + " left");
     }
     const std::uint8_t* p = data_ + pos_;
     pos_ += n;
@@ -175,11 +173,11 @@ public:
     const std::uint32_t n = u32(what);
     if (n > cap) {
       fail(std::string("absurd ") + what + " " + std::to_string(n) + " (at most " +
-        std::to_string(cap) + ")");
+           std::to_string(cap) + ")");
     }
     if (minRecordBytes > 0 && n > remaining() / minRecordBytes) {
-      fail(std::string("truncated: ") + what + " " + std::to_string(n) +
-        " does not fit in the " + std::to_string(remaining()) + " bytes left");
+      fail(std::string("truncated: ") + what + " " + std::to_string(n) + " does not fit in the " +
+           std::to_string(remaining()) + " bytes left");
     }
     return n;
   }
@@ -250,7 +248,7 @@ Material readMaterial(Reader& r, std::uint32_t index)
   if (const void* nul = std::memchr(name, 0, nameLength)) {
     const auto i = static_cast<std::size_t>(static_cast<const std::uint8_t*>(nul) - name);
     r.failAt(nameAt + i, "material " + std::to_string(index) + ": name has a NUL byte (name byte " +
-      std::to_string(i) + " of " + std::to_string(nameLength) + ")");
+                           std::to_string(i) + " of " + std::to_string(nameLength) + ")");
   }
   m.name.assign(reinterpret_cast<const char*>(name), nameLength);
   m.opacity = r.f64("opacity");
@@ -280,8 +278,8 @@ void writeTemplate(Writer& w, const Template& t)
   w.u8(t.capped ? 1 : 0);
   w.u64(t.events);
   const EnergyLedger& l = t.ledger;
-  for (double f : { l.initial, l.stored, l.lostInTransit, l.escaped, l.droppedBelowThreshold,
-         l.droppedAtCap }) {
+  for (double f :
+    { l.initial, l.stored, l.lostInTransit, l.escaped, l.droppedBelowThreshold, l.droppedAtCap }) {
     w.f64(f);
   }
   for (const Photon& p : t.photons) {
@@ -302,7 +300,8 @@ Template readTemplate(Reader& r, const GeneratorSettings& s)
     r.count("photon count", static_cast<std::uint32_t>(kMaxPhotonsCap), kPhotonBytes);
   if (photons > static_cast<std::uint32_t>(s.maxPhotonsPerTemplate)) {
     r.failAt(photonsAt, "photon count " + std::to_string(photons) +
-      " exceeds the settings' maxPhotonsPerTemplate " + std::to_string(s.maxPhotonsPerTemplate));
+                          " exceeds the settings' maxPhotonsPerTemplate " +
+                          std::to_string(s.maxPhotonsPerTemplate));
   }
   const std::uint8_t capped = r.u8("capped flag");
   if (capped > 1) {
@@ -313,7 +312,8 @@ Template readTemplate(Reader& r, const GeneratorSettings& s)
   t.events = r.u64("event count");
   if (t.events > static_cast<std::uint64_t>(s.maxEventsPerTemplate)) {
     r.failAt(eventsAt, "event count " + std::to_string(t.events) +
-      " exceeds the settings' maxEventsPerTemplate " + std::to_string(s.maxEventsPerTemplate));
+                         " exceeds the settings' maxEventsPerTemplate " +
+                         std::to_string(s.maxEventsPerTemplate));
   }
   EnergyLedger& l = t.ledger;
   l.initial = r.f64("ledger.initial");
@@ -341,7 +341,7 @@ std::vector<std::uint8_t> serialize(const TemplateSet& set)
   set.settings.validate();
   if (set.materials.size() > kMaxFileMaterials) {
     throw std::invalid_argument("writeTemplates: at most " + std::to_string(kMaxFileMaterials) +
-      " materials per file, got " + std::to_string(set.materials.size()));
+                                " materials per file, got " + std::to_string(set.materials.size()));
   }
   Writer w;
   w.bytes.insert(w.bytes.end(), kMagic, kMagic + 8);
@@ -354,8 +354,9 @@ std::vector<std::uint8_t> serialize(const TemplateSet& set)
     mt.material.validate();
     if (mt.templates.size() != static_cast<std::size_t>(set.settings.templatesPerMaterial)) {
       throw std::invalid_argument("writeTemplates: material " + std::to_string(m) + " has " +
-        std::to_string(mt.templates.size()) + " templates, but settings.templatesPerMaterial is " +
-        std::to_string(set.settings.templatesPerMaterial));
+                                  std::to_string(mt.templates.size()) +
+                                  " templates, but settings.templatesPerMaterial is " +
+                                  std::to_string(set.settings.templatesPerMaterial));
     }
     writeMaterial(w, mt.material);
     w.u32(static_cast<std::uint32_t>(mt.templates.size()));
@@ -364,22 +365,22 @@ std::vector<std::uint8_t> serialize(const TemplateSet& set)
       std::string problem = templateProblem(tpl);
       if (tpl.photons.size() > static_cast<std::size_t>(set.settings.maxPhotonsPerTemplate)) {
         problem = std::to_string(tpl.photons.size()) +
-          " photons exceed settings.maxPhotonsPerTemplate " +
-          std::to_string(set.settings.maxPhotonsPerTemplate);
+                  " photons exceed settings.maxPhotonsPerTemplate " +
+                  std::to_string(set.settings.maxPhotonsPerTemplate);
       } else if (tpl.events > static_cast<std::uint64_t>(set.settings.maxEventsPerTemplate)) {
         problem = std::to_string(tpl.events) + " events exceed settings.maxEventsPerTemplate " +
-          std::to_string(set.settings.maxEventsPerTemplate);
+                  std::to_string(set.settings.maxEventsPerTemplate);
       }
       if (!problem.empty()) {
-        throw std::invalid_argument("writeTemplates: material " + std::to_string(m) +
-          " template " + std::to_string(t) + ": " + problem);
+        throw std::invalid_argument("writeTemplates: material " + std::to_string(m) + " template " +
+                                    std::to_string(t) + ": " + problem);
       }
       writeTemplate(w, tpl);
     }
   }
   if (w.bytes.size() + 8 > kMaxTemplateFileBytes) {
     throw std::invalid_argument("writeTemplates: the set needs more than " +
-      std::to_string(kMaxTemplateFileBytes) + " bytes");
+                                std::to_string(kMaxTemplateFileBytes) + " bytes");
   }
   w.u64(fnv1a(w.bytes.data(), w.bytes.size()));
   return w.bytes;
@@ -388,8 +389,8 @@ std::vector<std::uint8_t> serialize(const TemplateSet& set)
 TemplateSet parse(const std::uint8_t* data, std::size_t size, const std::string& source)
 {
   if (size > kMaxTemplateFileBytes) {
-    throw std::runtime_error(source + ": larger than the " +
-      std::to_string(kMaxTemplateFileBytes) + "-byte limit");
+    throw std::runtime_error(
+      source + ": larger than the " + std::to_string(kMaxTemplateFileBytes) + "-byte limit");
   }
   Reader r(data, size, source);
   const std::uint8_t* magic = r.take(8, "magic");
@@ -399,7 +400,7 @@ TemplateSet parse(const std::uint8_t* data, std::size_t size, const std::string&
   const std::uint32_t version = r.u32("version");
   if (version != kTemplateFileVersion) {
     r.fail("unsupported version " + std::to_string(version) + " (this reader knows " +
-      std::to_string(kTemplateFileVersion) + ")");
+           std::to_string(kTemplateFileVersion) + ")");
   }
   if (r.u32("flags") != 0) {
     r.fail("unknown flags set");
@@ -414,19 +415,20 @@ TemplateSet parse(const std::uint8_t* data, std::size_t size, const std::string&
   for (std::uint32_t m = 0; m < materials; ++m) {
     if (r.remaining() == 8 && intact) { // only the checksum is left
       r.fail("the header counts " + std::to_string(materials) + " materials, but the file " +
-        "holds " + std::to_string(m));
+             "holds " + std::to_string(m));
     }
     MaterialTemplates mt;
     mt.material = readMaterial(r, m);
     // The settings promise templatesPerMaterial templates for every material; a file
     // holding fewer (0 loads as a set without photons) or more did not come from them.
     const std::size_t templatesAt = r.position();
-    const std::uint32_t templates = r.count("template count",
-      static_cast<std::uint32_t>(kMaxTemplatesPerMaterial), kTemplateHeaderBytes);
+    const std::uint32_t templates = r.count(
+      "template count", static_cast<std::uint32_t>(kMaxTemplatesPerMaterial), kTemplateHeaderBytes);
     if (templates != static_cast<std::uint32_t>(set.settings.templatesPerMaterial)) {
       r.failAt(templatesAt, "material " + std::to_string(m) + " holds " +
-        std::to_string(templates) + " templates, but the settings' templatesPerMaterial is " +
-        std::to_string(set.settings.templatesPerMaterial));
+                              std::to_string(templates) +
+                              " templates, but the settings' templatesPerMaterial is " +
+                              std::to_string(set.settings.templatesPerMaterial));
     }
     mt.templates.reserve(templates);
     for (std::uint32_t t = 0; t < templates; ++t) {
@@ -440,9 +442,9 @@ TemplateSet parse(const std::uint8_t* data, std::size_t size, const std::string&
   if (!checksumMatches) {
     if (r.remaining() > 0 && intact) {
       // Not corrupted: the counted records end before the checksum.
-      r.failAt(payload, "the records of the header's material count " +
-        std::to_string(materials) + " end " + std::to_string(size - 8 - payload) +
-        " bytes before the checksum: a count disagrees with the content");
+      r.failAt(payload, "the records of the header's material count " + std::to_string(materials) +
+                          " end " + std::to_string(size - 8 - payload) +
+                          " bytes before the checksum: a count disagrees with the content");
     }
     r.fail("checksum mismatch (file corrupted)");
   }
@@ -462,8 +464,8 @@ std::vector<std::uint8_t> readAll(std::istream& in, const std::string& source)
     const auto got = static_cast<std::size_t>(in.gcount());
     bytes.insert(bytes.end(), buffer, buffer + got);
     if (bytes.size() > kMaxTemplateFileBytes) {
-      throw std::runtime_error(source + ": larger than the " +
-        std::to_string(kMaxTemplateFileBytes) + "-byte limit");
+      throw std::runtime_error(
+        source + ": larger than the " + std::to_string(kMaxTemplateFileBytes) + "-byte limit");
     }
   }
   if (in.bad()) {
@@ -477,7 +479,8 @@ std::vector<std::uint8_t> readAll(std::istream& in, const std::string& source)
 void writeTemplates(std::ostream& out, const TemplateSet& set)
 {
   const std::vector<std::uint8_t> bytes = serialize(set);
-  out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  out.write(
+    reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
   if (!out) {
     throw std::runtime_error("writeTemplates: write failed");
   }
@@ -490,7 +493,8 @@ void saveTemplates(const std::string& path, const TemplateSet& set)
   if (!out) {
     throw std::runtime_error("template file '" + path + "': cannot open for writing");
   }
-  out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  out.write(
+    reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
   out.close();
   if (!out) {
     throw std::runtime_error("template file '" + path + "': write failed");

@@ -22,14 +22,13 @@ double kernelRadius(const Material& material, double sigmaT, double minRadius, d
     return maxRadius;
   }
   const double lambdaRadii = meanFreePath(material);
-  const double radius = std::isfinite(lambdaRadii) && lambdaRadii > 0.0
-    ? (1.0 / sigmaT) / lambdaRadii
-    : maxRadius;
+  const double radius =
+    std::isfinite(lambdaRadii) && lambdaRadii > 0.0 ? (1.0 / sigmaT) / lambdaRadii : maxRadius;
   return std::clamp(radius, minRadius, maxRadius);
 }
 
-std::vector<KernelPhoton> mergedKernel(const std::vector<Template>& templates, int cap,
-  double radius)
+std::vector<KernelPhoton> mergedKernel(
+  const std::vector<Template>& templates, int cap, double radius)
 {
   if (cap < 1) {
     throw std::invalid_argument("mergedKernel: the photon cap must be at least 1");

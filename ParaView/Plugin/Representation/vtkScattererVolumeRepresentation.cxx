@@ -72,7 +72,7 @@ vtkScattererTemplateVolumeMapper* vtkScattererVolumeRepresentation::GetScatterer
 // Each setter changes the mapper only; the transport volume and shader notice the
 // change themselves. MarkModified makes ParaView render the view again.
 #define vtkScattererForward(name, type)                                                            \
-  void vtkScattererVolumeRepresentation::Set##name(type value)                                    \
+  void vtkScattererVolumeRepresentation::Set##name(type value)                                     \
   {                                                                                                \
     this->GetScattererMapper()->Set##name(value);                                                  \
     this->MarkModified();                                                                          \
@@ -228,7 +228,8 @@ void vtkScattererVolumeRepresentation::UpdateMapperParameters()
     for (int axis = 0; axis < 3; ++axis)
     {
       planes[2 * axis] = std::max(planes[2 * axis], user[2 * axis]);
-      planes[2 * axis + 1] = std::max(planes[2 * axis], std::min(planes[2 * axis + 1], user[2 * axis + 1]));
+      planes[2 * axis + 1] =
+        std::max(planes[2 * axis], std::min(planes[2 * axis + 1], user[2 * axis + 1]));
     }
   }
   this->VolumeMapper->SetCropping(1);
@@ -246,9 +247,9 @@ void vtkScattererVolumeRepresentation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RendersOwnedPartOnly: " << this->RendersOwnedPartOnly << "\n";
   if (this->RendersOwnedPartOnly)
   {
-    os << indent << "OwnedBounds: (" << this->OwnedBounds[0] << ", " << this->OwnedBounds[1]
-       << ", " << this->OwnedBounds[2] << ", " << this->OwnedBounds[3] << ", "
-       << this->OwnedBounds[4] << ", " << this->OwnedBounds[5] << ")\n";
+    os << indent << "OwnedBounds: (" << this->OwnedBounds[0] << ", " << this->OwnedBounds[1] << ", "
+       << this->OwnedBounds[2] << ", " << this->OwnedBounds[3] << ", " << this->OwnedBounds[4]
+       << ", " << this->OwnedBounds[5] << ")\n";
   }
   os << indent << "ScattererMapper:\n";
   this->VolumeMapper->PrintSelf(os, indent.GetNextIndent());

@@ -21,11 +21,17 @@
 
 #include <vector>
 
-namespace scatterer_reference {
+namespace scatterer_reference
+{
 
-enum class Normalisation { None, LeastSquares };
+enum class Normalisation
+{
+  None,
+  LeastSquares
+};
 
-struct Metrics {
+struct Metrics
+{
   double scale = 1.0; // exposure factor applied to the test image
   double rmse = 0.0;
   double psnr = 0.0;
@@ -35,9 +41,10 @@ struct Metrics {
 /** The least-squares exposure factor s of `test` toward `reference` (1 if test is all zero). */
 double leastSquaresScale(const std::vector<float>& test, const std::vector<float>& reference);
 
-/** All metrics of `test` against `reference` (same size; throws std::invalid_argument otherwise). */
-Metrics compare(const std::vector<float>& test, const std::vector<float>& reference, int width, int height,
-  Normalisation normalisation = Normalisation::LeastSquares);
+/** All metrics of `test` against `reference` (same size; throws std::invalid_argument otherwise).
+ */
+Metrics compare(const std::vector<float>& test, const std::vector<float>& reference, int width,
+  int height, Normalisation normalisation = Normalisation::LeastSquares);
 
 double rmse(const std::vector<float>& a, const std::vector<float>& b, double scaleA = 1.0);
 double psnr(double rmse, double peak);
@@ -45,7 +52,7 @@ double ssim(const std::vector<float>& a, const std::vector<float>& b, int width,
   double scaleA = 1.0);
 
 /** Per-pixel |luminance(scaleA * a) - luminance(b)|, width * height. */
-std::vector<float> errorMap(const std::vector<float>& a, const std::vector<float>& b, int width, int height,
-  double scaleA = 1.0);
+std::vector<float> errorMap(const std::vector<float>& a, const std::vector<float>& b, int width,
+  int height, double scaleA = 1.0);
 
 } // namespace scatterer_reference

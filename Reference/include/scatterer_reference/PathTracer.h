@@ -60,12 +60,14 @@
 #include <functional>
 #include <vector>
 
-namespace scatterer_reference {
+namespace scatterer_reference
+{
 
 /** sigma_t per world unit from a VTK opacity alpha per unit distance u. */
 double sigmaFromOpacity(double alpha, double unitDistance);
 
-struct TransferTable {
+struct TransferTable
+{
   double scalarMin = 0.0, scalarMax = 1.0; // entries span [min, max] uniformly, clamped outside
   std::vector<float> sigmaT;               // per world unit
   std::vector<glm::vec3> albedo;           // single-scattering albedo per channel, in [0, 1]
@@ -76,31 +78,36 @@ struct TransferTable {
   std::vector<glm::vec3> emission;
 };
 
-struct Volume {
-  glm::ivec3 dims{ 0 };                 // grid points per axis, each >= 2
+struct Volume
+{
+  glm::ivec3 dims{ 0 }; // grid points per axis, each >= 2
   glm::dvec3 origin{ 0.0 }, spacing{ 1.0 };
-  std::vector<float> scalars;           // dims.x * dims.y * dims.z, x fastest
+  std::vector<float> scalars; // dims.x * dims.y * dims.z, x fastest
   TransferTable table;
 };
 
-struct DirectionalLight {
+struct DirectionalLight
+{
   glm::dvec3 toLight{ 0, 0, 1 }; // unit vector toward the light
   glm::dvec3 irradiance{ 1.0 };  // RGB, on a plane normal to the light
 };
 
-struct PointLight {
+struct PointLight
+{
   glm::dvec3 position{ 0.0 };
   glm::dvec3 intensity{ 1.0 };
   bool inverseSquare = true;
 };
 
-struct Camera {
+struct Camera
+{
   glm::dvec3 position{ 0, 0, 1 }, focalPoint{ 0.0 }, viewUp{ 0, 1, 0 };
   double viewAngleDeg = 30.0;
   int width = 64, height = 64;
 };
 
-struct Scene {
+struct Scene
+{
   Volume volume;
   std::vector<DirectionalLight> directionalLights;
   std::vector<PointLight> pointLights;
@@ -109,7 +116,8 @@ struct Scene {
   Camera camera;
 };
 
-struct RenderSettings {
+struct RenderSettings
+{
   int samplesPerPixel = 16;
   int maxScatteringOrder = 64;
   int rouletteStart = 3;
@@ -120,9 +128,10 @@ struct RenderSettings {
   std::function<void(double)> progress;
 };
 
-struct RenderResult {
+struct RenderResult
+{
   int width = 0, height = 0, samplesPerPixel = 0;
-  std::vector<float> rgb;          // linear HDR, width * height * 3, bottom row first
+  std::vector<float> rgb;           // linear HDR, width * height * 3, bottom row first
   std::vector<float> standardError; // per pixel, standard error of the luminance
   double rmsStandardError = 0.0;    // RMS of standardError over the image
   double meanLuminance = 0.0;
@@ -130,7 +139,8 @@ struct RenderResult {
 };
 
 /** A prepared scene: macro-cell majorants built once; thread-safe to query. */
-class PathTracer {
+class PathTracer
+{
 public:
   explicit PathTracer(Scene scene, int macroCell = 8);
 
@@ -144,8 +154,8 @@ public:
     std::uint64_t stream) const;
 
   /** One path-traced radiance sample along a ray (d unit). */
-  glm::dvec3 radiance(const glm::dvec3& o, const glm::dvec3& d, Pcg32& rng,
-    const RenderSettings& settings) const;
+  glm::dvec3 radiance(
+    const glm::dvec3& o, const glm::dvec3& d, Pcg32& rng, const RenderSettings& settings) const;
 
   /** The camera image. */
   RenderResult render(const RenderSettings& settings) const;
@@ -158,9 +168,10 @@ private:
   // Delta tracking: true and t of the real collision if one happens in [t0, t1].
   bool deltaTrack(const glm::dvec3& o, const glm::dvec3& d, double t0, double t1, Pcg32& rng,
     double& tHit, glm::vec3* albedo) const;
-  double ratioTrack(const glm::dvec3& o, const glm::dvec3& d, double t0, double t1, Pcg32& rng) const;
-  void lookup(const glm::dvec3& p, float& sigma, glm::vec3* albedo,
-    glm::vec3* emission = nullptr) const;
+  double ratioTrack(
+    const glm::dvec3& o, const glm::dvec3& d, double t0, double t1, Pcg32& rng) const;
+  void lookup(
+    const glm::dvec3& p, float& sigma, glm::vec3* albedo, glm::vec3* emission = nullptr) const;
 
   Scene scene_;
   int macro_ = 8;
@@ -171,6 +182,9 @@ private:
 };
 
 /** Luminance (Rec. 709 weights) of a linear RGB colour. */
-inline double luminance(const glm::dvec3& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
+inline double luminance(const glm::dvec3& c)
+{
+  return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
+}
 
 } // namespace scatterer_reference

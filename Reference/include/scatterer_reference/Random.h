@@ -8,14 +8,18 @@
 
 #include <cstdint>
 
-namespace scatterer_reference {
+namespace scatterer_reference
+{
 
 // scatterer::Pcg32::forStream(seed, stream) (SplitMix64 mixing of (seed, stream), so that
 // neighbouring pixels get unrelated streams), drawing floats.
-class Pcg32 {
+class Pcg32
+{
 public:
   Pcg32(std::uint64_t seed, std::uint64_t stream)
-      : rng_(scatterer::Pcg32::forStream(seed, stream)) {}
+    : rng_(scatterer::Pcg32::forStream(seed, stream))
+  {
+  }
 
   std::uint32_t next() { return rng_.next(); }
 

@@ -8,15 +8,15 @@
 namespace scatterer {
 
 struct GeneratorSettings {
-  int initialLights = 4;          // L: the initial energy 1 is split over L lights (Table 2)
+  int initialLights = 4; // L: the initial energy 1 is split over L lights (Table 2)
   // a packet below threshold * (1 / L) stops branching
   double threshold = illumination::GeneratorThreshold.Default;
   // templates per material, each from its own random stream
   int templatesPerMaterial = illumination::TemplatesPerMaterial.Default;
   std::uint64_t seed = 0x5CA77E2E5EEDull;
 
-  double stepLength = 0.05;       // dx of Eq. 2: distance between scattering events, template radii
-  double latticeCell = 0.02;      // edge of the merge lattice, template radii
+  double stepLength = 0.05;  // dx of Eq. 2: distance between scattering events, template radii
+  double latticeCell = 0.02; // edge of the merge lattice, template radii
 
   // Hard caps: whatever the threshold (1e-9 included), one template never has more
   // photons or processes more packets than this; Template::capped reports a hit.

@@ -8,14 +8,10 @@
 
 #include <limits>
 
-namespace scatterer
-{
-namespace illumination
-{
+namespace scatterer {
+namespace illumination {
 /** A number the user sets: its name (as in the mapper's Set<Name>), default and range. */
-template <typename T>
-struct Setting
-{
+template <typename T> struct Setting {
   const char* Name;
   T Default;
   T Minimum;
@@ -23,22 +19,19 @@ struct Setting
 };
 
 /** An effect or behaviour switched on or off. */
-struct Switch
-{
+struct Switch {
   const char* Name;
   bool Default;
 };
 
 /** How the light a sample receives is found. */
-enum Mode
-{
+enum Mode {
   Transport = 0, ///< the light transport volume (scatterer/Transport.h), read once per sample
   PerSample = 1  ///< the paper's local photon test at every sample
 };
 
 /** Which shader paths are compiled. */
-enum PathSelection
-{
+enum PathSelection {
   Automatic = 0,  ///< what the scene needs (an effect with nothing to act on is left out)
   AsRequested = 1 ///< every effect switched on
 };
@@ -51,7 +44,8 @@ inline constexpr Switch BoundaryRefraction{ "BoundaryRefractionEnabled", true };
 inline constexpr Switch TemplateBlending{ "TemplateBlendingEnabled", false };
 inline constexpr Switch CroppedMatterCastsShadows{ "CroppedMatterCastsShadows", false };
 
-inline constexpr Setting<int> IlluminationMode{ "IlluminationMode", Transport, Transport, PerSample };
+inline constexpr Setting<int> IlluminationMode{ "IlluminationMode", Transport, Transport,
+  PerSample };
 inline constexpr Setting<int> ShaderPathSelection{ "ShaderPathSelection", Automatic, Automatic,
   AsRequested };
 
@@ -78,7 +72,7 @@ inline constexpr Setting<int> IlluminationInterval{ "IlluminationInterval", 4, 1
 inline constexpr Setting<double> LongRangeMultiple{ "LongRangeMultiple", 3.0, 1.0, 64.0 };
 inline constexpr Setting<double> PhotonThreshold{ "PhotonThreshold", 0.002, 0.0, 1.0 };
 inline constexpr Setting<double> GeneratorThreshold{ "GeneratorThreshold", 0.01, 1e-6, 0.5 };
-}
-}
+} // namespace illumination
+} // namespace scatterer
 
 #endif

@@ -16,7 +16,7 @@ struct Selector {
   Kind kind = Kind::ScalarRange;
   double lo = 0.0; // ScalarRange: lo <= s <= hi
   double hi = 1.0;
-  int label = 0;   // Label: s == label
+  int label = 0; // Label: s == label
 
   static Selector range(double lo, double hi);
   static Selector labelId(int id);
@@ -25,10 +25,10 @@ struct Selector {
 };
 
 struct Material {
-  std::string name;              // for messages and files only; at most 255 bytes, no NUL
-  double opacity = 0.5;          // the paper's 1 - T(d), in [0, 1]: extinction per template radius
-  double refractiveIndex = 1.4;  // n > 0; 1.4 is typical of soft tissue
-  glm::vec3 diffuse{1.0f, 1.0f, 1.0f}; // RGB in [0, 1]
+  std::string name;             // for messages and files only; at most 255 bytes, no NUL
+  double opacity = 0.5;         // the paper's 1 - T(d), in [0, 1]: extinction per template radius
+  double refractiveIndex = 1.4; // n > 0; 1.4 is typical of soft tissue
+  glm::vec3 diffuse{ 1.0f, 1.0f, 1.0f }; // RGB in [0, 1]
   Selector selector;
 
   // Throws std::invalid_argument naming the parameter for NaN, infinite, negative or

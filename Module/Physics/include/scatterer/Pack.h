@@ -29,7 +29,8 @@ struct PackedTemplates {
   std::vector<float> rgba;
   std::vector<std::uint16_t> rgbaHalf; // RGBA16F only: the half-float bits of rgba
   std::vector<int> photonCount;        // per row: texels with intensity > 0
-  std::vector<double> truncatedIntensity; // per row: intensity of photons left out (cap, half underflow)
+  std::vector<double>
+    truncatedIntensity; // per row: intensity of photons left out (cap, half underflow)
   std::vector<int> materialFirstRow;
   std::vector<int> materialRowCount;
 

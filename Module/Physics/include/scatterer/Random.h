@@ -67,7 +67,7 @@ public:
     const std::uint64_t hi = next() >> 5u; // 27 bits
     const std::uint64_t lo = next() >> 6u; // 26 bits
     return (static_cast<double>(hi) * 67108864.0 + static_cast<double>(lo)) *
-      (1.0 / 9007199254740992.0);
+           (1.0 / 9007199254740992.0);
   }
 
   // Uniform float in [0, 1) with 24 random bits (exact).

@@ -23,10 +23,10 @@ std::optional<double> cosCriticalAngle(double n1, double n2);
 // Refracts the unit direction `dir` at a surface with unit normal `normal` (either
 // orientation) going from index n1 into n2. Returns the unit refracted direction, or
 // nullopt on total internal reflection. n1 == n2 returns `dir` unchanged, bit for bit.
-std::optional<glm::vec3> refract(const glm::vec3& dir, const glm::vec3& normal, double n1,
-  double n2);
-std::optional<glm::dvec3> refract(const glm::dvec3& dir, const glm::dvec3& normal, double n1,
-  double n2);
+std::optional<glm::vec3> refract(
+  const glm::vec3& dir, const glm::vec3& normal, double n1, double n2);
+std::optional<glm::dvec3> refract(
+  const glm::dvec3& dir, const glm::dvec3& normal, double n1, double n2);
 
 // Mirror reflection of `dir` about the plane with unit normal `normal`.
 glm::dvec3 reflect(const glm::dvec3& dir, const glm::dvec3& normal);

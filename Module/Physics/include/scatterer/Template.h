@@ -37,19 +37,19 @@ struct EnergyLedger {
 struct Template {
   std::vector<Photon> photons; // sorted by descending intensity, ties by lattice cell (x, y, z)
   EnergyLedger ledger;
-  bool capped = false;         // a hard cap of GeneratorSettings stopped generation early
-  std::uint64_t events = 0;    // packets processed (each one lands or escapes)
+  bool capped = false;      // a hard cap of GeneratorSettings stopped generation early
+  std::uint64_t events = 0; // packets processed (each one lands or escapes)
 };
 
 // One template. templateIndex (>= 0) selects the random stream: the same
 // (material, settings, templateIndex) gives a bit-identical template on every run.
 // Throws std::invalid_argument for invalid inputs.
-Template generateTemplate(const Material& material, const GeneratorSettings& settings,
-  int templateIndex);
+Template generateTemplate(
+  const Material& material, const GeneratorSettings& settings, int templateIndex);
 
 // settings.templatesPerMaterial templates with indices 0, 1, ...
-std::vector<Template> generateTemplates(const Material& material,
-  const GeneratorSettings& settings);
+std::vector<Template> generateTemplates(
+  const Material& material, const GeneratorSettings& settings);
 
 // Seed used for material `materialIndex` by generateAllTemplates, so materials do not
 // share random streams.
@@ -57,8 +57,8 @@ std::uint64_t materialSeed(std::uint64_t seed, int materialIndex);
 
 // Templates of several materials: result[m] = generateTemplates(materials[m], settings
 // with seed = materialSeed(settings.seed, m)).
-std::vector<std::vector<Template>> generateAllTemplates(const std::vector<Material>& materials,
-  const GeneratorSettings& settings);
+std::vector<std::vector<Template>> generateAllTemplates(
+  const std::vector<Material>& materials, const GeneratorSettings& settings);
 
 // FNV-1a 64 over the little-endian bit patterns of every photon (x, y, z, intensity):
 // a compact fingerprint for golden tests and cache keys.

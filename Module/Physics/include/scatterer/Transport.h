@@ -43,7 +43,7 @@ double kernelRadius(const Material& material, double sigmaT, double minRadius, d
 // `radius` world units. Sorted by weight, descending; weights sum to 1 (empty if
 // there is no photon). Throws std::invalid_argument for cap < 1 or a
 // non-positive radius.
-std::vector<KernelPhoton> mergedKernel(const std::vector<Template>& templates, int cap,
-  double radius);
+std::vector<KernelPhoton> mergedKernel(
+  const std::vector<Template>& templates, int cap, double radius);
 
 } // namespace scatterer
