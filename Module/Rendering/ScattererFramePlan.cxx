@@ -202,6 +202,8 @@ std::string FramePlanner::PlanMaterials(vtkVolume* vol, const VolumeSource& sour
     this->MaterialProperty(property, source.Mask && source.LabelMapMask, derivation);
   plan.Materials = scatterer_scene::BuildMaterials(requested, materialProperty, range, derivation);
   plan.MaterialsBuilt = true;
+  plan.SpeedRatios = scatterer_scene::SpeedRatios(plan.Materials);
+  plan.OpacityRatios = scatterer_scene::OpacityRatios(plan.Materials);
   if (plan.Materials.Materials.empty())
   {
     return "no material: the opacity transfer function is below 1e-4 everywhere";

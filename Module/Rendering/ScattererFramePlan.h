@@ -39,6 +39,10 @@ struct FramePlan
   scatterer_scene::LightSet Lights;
   scatterer_scene::MaterialSet Materials;
   bool MaterialsBuilt = false; ///< Materials were derived this frame (even if none)
+  /// materials x materials tables, built once with the materials: the Snell speed ratio
+  /// and the opacity ratio between each pair (the transport tables and the per-sample
+  /// uniforms both read them)
+  std::vector<float> SpeedRatios, OpacityRatios;
   vtkImageData* Image = nullptr;
   vtkDataArray* Scalars = nullptr;
   int CellFlag = 0;

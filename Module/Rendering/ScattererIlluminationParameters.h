@@ -51,7 +51,7 @@ struct IlluminationParameters
  * Each illumination path integrates optical depth over distances in its own length
  * unit, so the factor is the strength times the world length of that unit, and a
  * strength of 1 is physical in both: the transport volume measures in world units
- * (unit 1; vtkScattererTransportVolume::Inputs::ExtinctionScale), the per-sample
+ * (unit 1; vtkScattererTransportVolume::Inputs::OcclusionScale), the per-sample
  * photon test in template radii (unit: the radius; the st_occlusionScale uniform,
  * scatterer_illumination_dec.glsl st_transmittance).
  */

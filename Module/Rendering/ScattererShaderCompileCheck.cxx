@@ -67,8 +67,10 @@ bool ShaderCompileCheck::End()
   vtkShaderProgram* bound = this->Window->GetShaderCache()->GetLastShaderBound();
   if (!bound)
   {
-    // Nothing was bound since Begin: the ray caster had no program to draw with.
-    return false;
+    // Nothing was bound since Begin: either the ray caster had no program to draw with
+    // (it failed to compile, and the ray caster raised an error), or it drew nothing this
+    // frame (an empty or invisible input: no error). Only the first is a failure.
+    return this->Errors.empty();
   }
   if (bound->GetCompiled() && IsIlluminationProgram(bound))
   {

@@ -155,7 +155,7 @@ std::string TransportUpdate::Update(vtkRenderer* ren, vtkVolume* vol, const Fram
     ++t.TablesVersion;
   }
   // Occlusion off: nothing along a light path absorbs (OcclusionScale in world units).
-  t.ExtinctionScale =
+  t.OcclusionScale =
     plan.Features.Shadow ? OcclusionScale(parameters.OcclusionStrength, 1.0) : 0.0f;
   this->UpdateLights(plan);
   t.Bleed = plan.Features.Bleed;
@@ -323,8 +323,8 @@ void TransportUpdate::UpdateTables(vtkVolume* vol, const FramePlan& plan,
           has ? kernel[k].offset.z : 0.0f, has ? kernel[k].weight : 0.0f });
     }
   }
-  t.SpeedRatios = scatterer_scene::SpeedRatios(plan.Materials);
-  t.OpacityRatios = scatterer_scene::OpacityRatios(plan.Materials);
+  t.SpeedRatios = plan.SpeedRatios;
+  t.OpacityRatios = plan.OpacityRatios;
 }
 
 void TransportUpdate::ReleaseGraphicsResources(vtkWindow* window)

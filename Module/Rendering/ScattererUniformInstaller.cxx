@@ -61,8 +61,8 @@ void UniformInstaller::Install(vtkVolume* vol, const FramePlan& plan,
       u.MaterialColors.push_back(m.Physics.diffuse[c]);
     }
   }
-  u.SpeedRatios = scatterer_scene::SpeedRatios(plan.Materials);
-  u.OpacityRatios = scatterer_scene::OpacityRatios(plan.Materials);
+  u.SpeedRatios = plan.SpeedRatios;
+  u.OpacityRatios = plan.OpacityRatios;
   scatterer_shader::SetIlluminationUniforms(vol, u, this->Samplers);
 }
 

@@ -50,7 +50,7 @@ std::uint64_t TransportKey(const vtkScattererTransportVolume::Inputs& in)
   f.Add(in.MediumRows);
   f.Add(in.ScalarScale);
   f.Add(in.ScalarBias);
-  f.Add(in.ExtinctionScale);
+  f.Add(in.OcclusionScale);
   f.Add(in.Downsample);
   f.Add(in.IndexOrigin, 3);
   f.Add(in.Cropping);

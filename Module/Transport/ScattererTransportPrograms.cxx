@@ -95,7 +95,7 @@ void SetCommonUniforms(vtkShaderProgram* program, const TransportGrid& grid,
 {
   program->SetUniformf("st_scalarScale", in.ScalarScale);
   program->SetUniformf("st_scalarBias", in.ScalarBias);
-  program->SetUniformf("st_extinctionScale", in.ExtinctionScale);
+  program->SetUniformf("st_occlusionScale", in.OcclusionScale);
   float dims[3];
   grid.GetDims(dims);
   program->SetUniform3f("st_gridDims", dims);

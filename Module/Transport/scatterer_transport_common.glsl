@@ -15,7 +15,7 @@ uniform sampler3D st_volume;       // the mapper's own scalar texture
 uniform float st_scalarScale;      // normalised scalar = texel * scale + bias
 uniform float st_scalarBias;
 uniform sampler2D st_medium;       // over the normalised scalar: rgb albedo (colour), a sigma_t per world unit
-uniform float st_extinctionScale;  // OcclusionStrength: scales the attenuation along light paths only
+uniform float st_occlusionScale;  // OcclusionStrength: scales the attenuation along light paths only
 uniform vec3 st_gridDims;
 uniform vec3 st_gridToTex;
 uniform vec3 st_gridToTexOffset;
@@ -104,7 +104,7 @@ vec4 st_mediumAt(vec3 t)
 // OcclusionStrength (1: physical; 0: no shadows, the medium still scatters).
 float st_attenuationAt(vec3 t)
 {
-  return st_extinctionScale * st_mediumAt(t).a;
+  return st_occlusionScale * st_mediumAt(t).a;
 }
 
 // Texture coordinate of grid position j in the transmittance texture.

@@ -86,7 +86,7 @@ public:
     /// rows of equal length (a label-map mask: one per label value, 0..255).
     std::vector<float> Medium;
     int MediumRows = 1;
-    float ExtinctionScale = 1;     ///< OcclusionStrength
+    float OcclusionScale = 1;      ///< OcclusionStrength
     std::vector<float> ClipPlanes; ///< 4 per plane (world): kept where n.p + d >= 0
     bool Cropping = false;
     int CropFlags = 0;
