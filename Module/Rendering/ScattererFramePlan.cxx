@@ -159,7 +159,7 @@ std::string FramePlanner::PlanGeometry(
     (std::abs(spacing[0]) * columnLength[0] + std::abs(spacing[1]) * columnLength[1] +
       std::abs(spacing[2]) * columnLength[2]) /
     3.0;
-  plan.Radius = parameters.TemplateRadius > 0.0 ? parameters.TemplateRadius : 10.0 * meanSpacing;
+  plan.Radius = scatterer::illumination::templateRadiusFor(parameters.TemplateRadius, meanSpacing);
   if (!(plan.Radius > 0.0) || !std::isfinite(plan.Radius))
   {
     warn("Scatterer-template illumination needs a positive, finite voxel spacing or "

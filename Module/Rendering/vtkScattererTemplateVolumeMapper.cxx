@@ -218,7 +218,7 @@ double vtkScattererTemplateVolumeMapper::GetIlluminationReach(const double spaci
   }
   const double sx = std::abs(spacing[0]), sy = std::abs(spacing[1]), sz = std::abs(spacing[2]);
   const double radius =
-    this->TemplateRadius > 0.0 ? this->TemplateRadius : 10.0 * (sx + sy + sz) / 3.0;
+    scatterer::illumination::templateRadiusFor(this->TemplateRadius, (sx + sy + sz) / 3.0);
   // Per sample: photons lie within one radius; the thin-part check marches on toward
   // the light to LongRangeMultiple x the photon's offset. Transport: the kernel reaches
   // one radius, the ambient occlusion two diffusion voxels and the diffusion one such

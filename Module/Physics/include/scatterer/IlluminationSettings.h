@@ -60,6 +60,12 @@ inline constexpr Setting<double> MultipleScattering{ "MultipleScattering", 1.0, 
 // the mean spacing), templates per material, photons kept per template.
 inline constexpr Setting<double> TemplateRadius{ "TemplateRadius", 0.0, 0.0,
   std::numeric_limits<double>::max() };
+// The template radius a TemplateRadius setting means for a volume whose mean voxel
+// spacing (world units) is meanSpacing: the setting itself, or 0 for ten voxels.
+inline double templateRadiusFor(double setting, double meanSpacing)
+{
+  return setting > 0.0 ? setting : 10.0 * meanSpacing;
+}
 inline constexpr Setting<int> TemplatesPerMaterial{ "TemplatesPerMaterial", 8, 1, 64 };
 inline constexpr Setting<int> PhotonCap{ "PhotonCap", 24, 1, 1024 };
 // Scales the extinction along light paths only (1 physical, 0 no shadows).
