@@ -44,7 +44,6 @@ void ShaderCompileCheck::Begin(vtkOpenGLRenderWindow* window, vtkObject* mapper)
 {
   this->Window = window;
   this->Mapper = mapper;
-  this->Program = nullptr;
   this->Errors.clear();
   vtkOpenGLShaderCache* cache = window->GetShaderCache();
   vtkShaderProgram* last = cache->GetLastShaderBound();
@@ -72,9 +71,9 @@ bool ShaderCompileCheck::End()
     // frame (an empty or invisible input: no error). Only the first is a failure.
     return this->Errors.empty();
   }
-  if (bound->GetCompiled() && IsIlluminationProgram(bound))
+  if (bound->GetCompiled() && (bound == this->Confirmed || IsIlluminationProgram(bound)))
   {
-    this->Program = bound;
+    this->Confirmed = bound;
     return true;
   }
   // Another program was bound after the ray cast (VTK's resampling quad when

@@ -7,7 +7,8 @@
 // binds a program only after it compiled (vtkShaderProgram::GetCompiled), and records
 // it as the cache's LastShaderBound. So the check forgets the last bound program
 // before the ray caster renders and reads it afterwards: a compiled illumination
-// program means it compiled and drew; no program bound means the compile failed.
+// program means it compiled and drew; no program bound, with an error raised, means
+// the compile failed (no program and no error: the ray caster drew nothing).
 //
 // One case the API cannot see: with ImageSampleDistance != 1, VTK draws its
 // resampling quad with another program after the ray cast, which hides the program
@@ -17,6 +18,8 @@
 #define ScattererShaderCompileCheck_h
 
 #include "vtkNew.h"
+#include "vtkShaderProgram.h" // for vtkWeakPointer<vtkShaderProgram>
+#include "vtkWeakPointer.h"
 
 #include <string>
 #include <vector>
@@ -24,7 +27,6 @@
 class vtkCallbackCommand;
 class vtkObject;
 class vtkOpenGLRenderWindow;
-class vtkShaderProgram;
 
 namespace scatterer_render
 {
@@ -49,9 +51,6 @@ public:
   /** Just after: false when the illumination program failed to compile. */
   bool End();
 
-  /** The illumination program that drew (nullptr: failed, or hidden by the quad). */
-  vtkShaderProgram* GetProgram() const { return this->Program; }
-
   /**
    * The errors held back during the render. After a failed compile they are the
    * ray caster's report of it, which the mapper replaces by its own, clearer error;
@@ -63,7 +62,9 @@ private:
   vtkOpenGLRenderWindow* Window = nullptr;
   vtkObject* Mapper = nullptr;
   unsigned long Tag = 0;
-  vtkShaderProgram* Program = nullptr;
+  // The illumination program last seen to draw: most frames draw with it again, and
+  // need not search its source text (tens of KB) for the marker.
+  vtkWeakPointer<vtkShaderProgram> Confirmed;
   std::vector<std::string> Errors;
   vtkNew<vtkCallbackCommand> Catcher;
 };
