@@ -1,0 +1,236 @@
+#include <scatterer/LightSpace.h>
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <thread>
+
+namespace scatterer {
+namespace lightspace {
+
+bool Box::empty() const { return lo.x > hi.x || lo.y > hi.y || lo.z > hi.z; }
+
+Line Map::line(int i, int j) const {
+  Line l;
+  if (positional) {
+    const glm::dvec2 p((i + 0.5) / size * 2.0 - 1.0, (j + 0.5) / size * 2.0 - 1.0);
+    l.origin = light;
+    l.direction = octahedralDecode(p);
+    l.tMin = 0.0;
+  } else {
+    l.origin = u * (lo.x + (i + 0.5) * texel) + v * (lo.y + (j + 0.5) * texel);
+    l.direction = travel;
+    l.tMin = -std::numeric_limits<double>::infinity();
+  }
+  return l;
+}
+
+glm::dvec2 Map::coordinate(const glm::dvec3& p) const {
+  if (positional) {
+    const glm::dvec3 d = p - light;
+    const double length = glm::length(d);
+    const glm::dvec3 direction = length > 0.0 ? d / length : glm::dvec3(0.0, 0.0, 1.0);
+    return octahedralEncode(direction) * 0.5 + glm::dvec2(0.5);
+  }
+  return (glm::dvec2(glm::dot(p, u), glm::dot(p, v)) - lo) / (texel * size);
+}
+
+Map directionalMap(const glm::dvec3& towardLight, const Box& whole, double texel, int maxSize) {
+  const double length = glm::length(towardLight);
+  if (!(length > 0.0) || !std::isfinite(length)) {
+    throw std::invalid_argument("lightspace::directionalMap: the light direction is zero");
+  }
+  if (whole.empty()) {
+    throw std::invalid_argument("lightspace::directionalMap: the volume's box is empty");
+  }
+  if (!(texel > 0.0) || maxSize < 2) {
+    throw std::invalid_argument(
+        "lightspace::directionalMap: the texel must be > 0 and the map at least 2 texels wide");
+  }
+  Map map;
+  map.travel = -towardLight / length;
+  // The plane basis: any two unit vectors orthogonal to the light and each other.
+  const glm::dvec3 a = std::abs(map.travel.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+  map.u = glm::normalize(glm::cross(map.travel, a));
+  map.v = glm::cross(map.travel, map.u);
+  glm::dvec2 lo(std::numeric_limits<double>::infinity());
+  glm::dvec2 hi(-std::numeric_limits<double>::infinity());
+  for (int c = 0; c < 8; ++c) {
+    const glm::dvec3 p((c & 1) ? whole.hi.x : whole.lo.x, (c & 2) ? whole.hi.y : whole.lo.y,
+        (c & 4) ? whole.hi.z : whole.lo.z);
+    const glm::dvec2 q(glm::dot(p, map.u), glm::dot(p, map.v));
+    lo = glm::min(lo, q);
+    hi = glm::max(hi, q);
+  }
+  const double extent = std::max(hi.x - lo.x, hi.y - lo.y);
+  // One texel of margin on each side, so bilinear lookups at the border stay inside.
+  map.texel = texel;
+  map.size = static_cast<int>(std::ceil(extent / texel)) + 3;
+  if (map.size > maxSize) {
+    map.size = maxSize;
+    map.texel = extent / (maxSize - 3);
+  }
+  map.lo = lo - glm::dvec2(map.texel);
+  return map;
+}
+
+Map positionalMap(const glm::dvec3& light, int size) {
+  if (size < 2) {
+    throw std::invalid_argument("lightspace::positionalMap: the map must be at least 2 texels wide");
+  }
+  Map map;
+  map.positional = true;
+  map.light = light;
+  map.size = size;
+  return map;
+}
+
+glm::dvec2 octahedralEncode(const glm::dvec3& d) {
+  const double n = std::abs(d.x) + std::abs(d.y) + std::abs(d.z);
+  glm::dvec2 p(d.x / n, d.y / n);
+  if (d.z < 0.0) {
+    const glm::dvec2 s(p.x >= 0.0 ? 1.0 : -1.0, p.y >= 0.0 ? 1.0 : -1.0);
+    p = (glm::dvec2(1.0) - glm::dvec2(std::abs(p.y), std::abs(p.x))) * s;
+  }
+  return p;
+}
+
+glm::dvec3 octahedralDecode(const glm::dvec2& p) {
+  glm::dvec3 d(p.x, p.y, 1.0 - std::abs(p.x) - std::abs(p.y));
+  if (d.z < 0.0) {
+    const glm::dvec2 s(p.x >= 0.0 ? 1.0 : -1.0, p.y >= 0.0 ? 1.0 : -1.0);
+    const glm::dvec2 q = (glm::dvec2(1.0) - glm::dvec2(std::abs(p.y), std::abs(p.x))) * s;
+    d.x = q.x;
+    d.y = q.y;
+  }
+  return glm::normalize(d);
+}
+
+bool clip(const Line& line, const Box& box, double& t0, double& t1) {
+  if (box.empty()) {
+    return false;
+  }
+  t0 = line.tMin;
+  t1 = std::numeric_limits<double>::infinity();
+  for (int a = 0; a < 3; ++a) {
+    const double o = line.origin[a], d = line.direction[a];
+    if (std::abs(d) < 1e-300) {
+      if (o < box.lo[a] || o > box.hi[a]) {
+        return false;
+      }
+      continue;
+    }
+    double ta = (box.lo[a] - o) / d, tb = (box.hi[a] - o) / d;
+    if (ta > tb) {
+      std::swap(ta, tb);
+    }
+    t0 = std::max(t0, ta);
+    t1 = std::min(t1, tb);
+  }
+  return t0 < t1;
+}
+
+double ExtinctionGrid::at(const glm::dvec3& p) const {
+  if (dims.x < 1 || dims.y < 1 || dims.z < 1) {
+    return 0.0;
+  }
+  int i0[3];
+  double f[3];
+  for (int a = 0; a < 3; ++a) {
+    const double x = std::min(std::max(p[a] - origin[a], 0.0), dims[a] - 1.0);
+    i0[a] = std::min(static_cast<int>(x), std::max(dims[a] - 2, 0));
+    f[a] = dims[a] > 1 ? x - i0[a] : 0.0;
+  }
+  const auto value = [&](int dx, int dy, int dz) {
+    const size_t x = static_cast<size_t>(std::min(i0[0] + dx, dims.x - 1));
+    const size_t y = static_cast<size_t>(std::min(i0[1] + dy, dims.y - 1));
+    const size_t z = static_cast<size_t>(std::min(i0[2] + dz, dims.z - 1));
+    return static_cast<double>(sigma[x + dims.x * (y + dims.y * z)]);
+  };
+  double result = 0.0;
+  for (int c = 0; c < 8; ++c) {
+    const int dx = c & 1, dy = (c >> 1) & 1, dz = (c >> 2) & 1;
+    const double w = (dx ? f[0] : 1.0 - f[0]) * (dy ? f[1] : 1.0 - f[1]) * (dz ? f[2] : 1.0 - f[2]);
+    if (w > 0.0) {
+      result += w * value(dx, dy, dz);
+    }
+  }
+  return result;
+}
+
+std::vector<float> opticalDepth(const Map& map, const ExtinctionGrid& grid, const Box& owned,
+    const glm::dmat3& indexToWorld, double step) {
+  if (!(step > 0.0)) {
+    throw std::invalid_argument("lightspace::opticalDepth: the step must be > 0");
+  }
+  std::vector<float> depth(static_cast<size_t>(map.size) * map.size, 0.0f);
+  if (owned.empty() || grid.sigma.empty()) {
+    return depth;
+  }
+  const auto rows = [&](int first, int last) {
+    for (int j = first; j < last; ++j) {
+      for (int i = 0; i < map.size; ++i) {
+        const Line l = map.line(i, j);
+        double t0, t1;
+        if (!clip(l, owned, t0, t1)) {
+          continue;
+        }
+        const int n = std::max(1, static_cast<int>(std::ceil((t1 - t0) / step)));
+        const double dt = (t1 - t0) / n;
+        double sum = 0.0;
+        for (int m = 0; m < n; ++m) {
+          sum += grid.at(l.origin + l.direction * (t0 + (m + 0.5) * dt));
+        }
+        // Beer-Lambert's exponent over this piece: sigma_t times world length.
+        depth[static_cast<size_t>(j) * map.size + i] =
+            static_cast<float>(sum * dt * glm::length(indexToWorld * l.direction));
+      }
+    }
+  };
+  const int threads =
+      std::max(1, std::min<int>(static_cast<int>(std::thread::hardware_concurrency()), map.size));
+  std::vector<std::thread> workers;
+  for (int t = 1; t < threads; ++t) {
+    workers.emplace_back(rows, map.size * t / threads, map.size * (t + 1) / threads);
+  }
+  rows(0, map.size / threads);
+  for (auto& w : workers) {
+    w.join();
+  }
+  return depth;
+}
+
+std::vector<float> enteringDepth(const Map& map, const std::vector<Box>& owned, int self,
+    const Box& selfReach, const std::vector<const float*>& depths) {
+  std::vector<float> entering(static_cast<size_t>(map.size) * map.size, 0.0f);
+  for (int j = 0; j < map.size; ++j) {
+    for (int i = 0; i < map.size; ++i) {
+      const Line l = map.line(i, j);
+      double t0, t1;
+      if (!clip(l, owned[self], t0, t1) && !clip(l, selfReach, t0, t1)) {
+        continue;
+      }
+      const double here = 0.5 * (t0 + t1);
+      const size_t texel = static_cast<size_t>(j) * map.size + i;
+      double sum = 0.0;
+      for (size_t k = 0; k < owned.size(); ++k) {
+        double s0, s1;
+        if (static_cast<int>(k) == self || !depths[k] || !clip(l, owned[k], s0, s1)) {
+          continue;
+        }
+        // Disjoint boxes: the one whose part of the line comes first is in front.
+        if (0.5 * (s0 + s1) < here) {
+          sum += depths[k][texel];
+        }
+      }
+      entering[texel] = static_cast<float>(sum);
+    }
+  }
+  return entering;
+}
+
+} // namespace lightspace
+} // namespace scatterer
