@@ -23,6 +23,7 @@
 #include <scatterer/Transport.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace scatterer_render
 {
@@ -157,7 +158,7 @@ std::string TransportUpdate::Update(vtkRenderer* ren, vtkVolume* vol, const Fram
   // Occlusion off: nothing along a light path absorbs (OcclusionScale in world units).
   t.OcclusionScale =
     plan.Features.Shadow ? OcclusionScale(parameters.OcclusionStrength, 1.0) : 0.0f;
-  this->UpdateLights(plan);
+  this->UpdateLights(plan, source, warn);
   t.Bleed = plan.Features.Bleed;
   t.Boundary = plan.Features.Boundary;
   t.MultipleScattering = static_cast<float>(parameters.MultipleScattering);
@@ -217,6 +218,7 @@ void TransportUpdate::UpdateGeometry(vtkVolume* vol, const FramePlan& plan,
   {
     t.TexToWorld[i] = texToWorld->GetElement(i / 4, i % 4);
     t.TexToDataset[i] = texToDataset->GetElement(i / 4, i % 4);
+    t.TexToIndex[i] = texToIndex->GetElement(i / 4, i % 4);
   }
   t.ClipPlanes.clear();
   if (vtkPlaneCollection* planes = source.ClippingPlanes)
@@ -241,7 +243,8 @@ void TransportUpdate::UpdateGeometry(vtkVolume* vol, const FramePlan& plan,
   }
 }
 
-void TransportUpdate::UpdateLights(const FramePlan& plan)
+void TransportUpdate::UpdateLights(
+  const FramePlan& plan, const TransportSource& source, WarnOnce& warn)
 {
   const auto& lights = plan.Lights;
   auto& out = this->Inputs.Lights;
@@ -262,6 +265,41 @@ void TransportUpdate::UpdateLights(const FramePlan& plan)
     light.ConeCos = lights.ConeCos[l];
     light.Exponent = lights.Exponent[l];
     out.push_back(light);
+  }
+  // A piece of a distributed volume: the maps are for the lights the exchange saw
+  // before this frame rendered; they must be this frame's.
+  this->Inputs.OwnedOnly = false;
+  const vtkScattererLightExchange::Result* exchange = source.Exchange;
+  if (!exchange || !exchange->Active)
+  {
+    return;
+  }
+  bool same = exchange->Lights.size() == out.size();
+  for (size_t l = 0; same && l < out.size(); ++l)
+  {
+    const vtkScattererTransportVolume::Light& a = exchange->Lights[l];
+    same = a.Positional == out[l].Positional;
+    for (int c = 0; same && c < 3; ++c)
+    {
+      same = std::abs(a.Toward[c] - out[l].Toward[c]) <= 1e-5f &&
+        std::abs(a.Position[c] - out[l].Position[c]) <= 1e-5f * (1.0f + std::abs(a.Position[c]));
+    }
+  }
+  if (!same)
+  {
+    warn("The light exchange between the pieces was made for other lights than this "
+         "frame's; this piece is lit through its own voxels and ghost layers only.");
+    return;
+  }
+  for (size_t l = 0; l < out.size(); ++l)
+  {
+    out[l].Entering = exchange->Lights[l].Entering;
+  }
+  this->Inputs.OwnedOnly = true;
+  for (int a = 0; a < 3; ++a)
+  {
+    this->Inputs.OwnedLo[a] = exchange->OwnedLo[a];
+    this->Inputs.OwnedHi[a] = exchange->OwnedHi[a];
   }
 }
 

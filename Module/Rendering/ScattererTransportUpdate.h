@@ -12,6 +12,7 @@
 
 #include "ScattererChangeKey.h"
 #include "ScattererMaskTexture.h"
+#include "vtkScattererLightExchange.h"
 #include "vtkScattererTransportVolume.h"
 
 #include "vtkNew.h"
@@ -43,6 +44,8 @@ struct TransportSource
   bool Cropping = false;
   int CropFlags = 0;
   const double* CroppingRegionPlanes = nullptr; ///< 6 values: x min, x max, y min, ...
+  /// A piece of a distributed volume: the light the other pieces let through, or null.
+  const vtkScattererLightExchange::Result* Exchange = nullptr;
   /// The transport stage's progress in [0, 1], or empty when nobody listens (each
   /// report makes the build wait for the GPU).
   std::function<void(double)> Progress;
@@ -71,13 +74,17 @@ public:
 
   vtkScattererTransportVolume* GetVolume() const { return this->Transport; }
 
+  /** True when the last update lit a piece with the light exchange's maps. */
+  bool UsesLightExchange() const { return this->Inputs.OwnedOnly; }
+
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:
   /** Where the volume texture lies (texture -> dataset -> world) and what clips it. */
   void UpdateGeometry(vtkVolume* volume, const FramePlan& plan, const TransportSource& source,
     const IlluminationParameters& parameters);
-  void UpdateLights(const FramePlan& plan);
+  /** The plan's lights; with an exchange made for them, the depth in front of the piece. */
+  void UpdateLights(const FramePlan& plan, const TransportSource& source, WarnOnce& warn);
   /** The medium, material and kernel tables, over the volume texture's scalar range. */
   void UpdateTables(vtkVolume* volume, const FramePlan& plan,
     const IlluminationParameters& parameters, const TemplateCache& templates, double lo, double hi,

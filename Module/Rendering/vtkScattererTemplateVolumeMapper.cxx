@@ -12,6 +12,7 @@
 #include "ScattererTransportUpdate.h"
 #include "ScattererUniformInstaller.h"
 #include "ScattererWarnOnce.h"
+#include "vtkScattererLightExchange.h"
 #include "vtkScattererTransportVolume.h"
 
 #include "vtkColorTransferFunction.h"
@@ -67,6 +68,8 @@ struct vtkScattererTemplateVolumeMapper::vtkInternals
   // Shader texts that failed to compile here: not tried again.
   scatterer_render::KeySet FailedShaders;
   scatterer_render::DecoratedVolumes Volumes;
+  // A piece of a distributed volume: the light from the other pieces (or none).
+  vtkSmartPointer<vtkScattererLightExchange> LightExchange;
 
   std::string LastFeatures = "stock: not rendered yet";
   int ActiveMaterials = 0;
@@ -194,6 +197,26 @@ double vtkScattererTemplateVolumeMapper::GetLastTransportBuildMilliseconds() con
 vtkScattererTransportVolume* vtkScattererTemplateVolumeMapper::GetTransportVolume() const
 {
   return this->Internals->Transport.GetVolume();
+}
+
+void vtkScattererTemplateVolumeMapper::SetLightExchange(vtkScattererLightExchange* exchange)
+{
+  if (this->Internals->LightExchange != exchange)
+  {
+    this->Internals->LightExchange = exchange;
+    this->IlluminationTime.Modified();
+    this->Modified();
+  }
+}
+
+vtkScattererLightExchange* vtkScattererTemplateVolumeMapper::GetLightExchange() const
+{
+  return this->Internals->LightExchange;
+}
+
+bool vtkScattererTemplateVolumeMapper::GetLightExchangeUsed() const
+{
+  return this->Internals->Transport.UsesLightExchange();
 }
 
 void vtkScattererTemplateVolumeMapper::SetMaterialDerivationRange(double lo, double hi)
@@ -384,6 +407,7 @@ std::string vtkScattererTemplateVolumeMapper::UpdateTransport(vtkRenderer* ren, 
   source.Cropping = this->GetCropping() != 0;
   source.CropFlags = this->GetCroppingRegionFlags();
   source.CroppingRegionPlanes = this->CroppingRegionPlanes;
+  source.Exchange = in.LightExchange ? &in.LightExchange->GetResult() : nullptr;
   // Progress only when someone listens (ParaView's progress bar via the
   // representation): reporting makes the build wait for each GPU stage.
   if (this->HasObserver(vtkCommand::ProgressEvent))
@@ -467,6 +491,7 @@ void vtkScattererTemplateVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "BoundaryRefractionEnabled: " << onOff(this->BoundaryRefractionEnabled) << "\n";
   os << indent << "TemplateBlendingEnabled: " << onOff(this->TemplateBlendingEnabled) << "\n";
   os << indent << "CroppedMatterCastsShadows: " << onOff(this->CroppedMatterCastsShadows) << "\n";
+  os << indent << "LightExchange: " << this->Internals->LightExchange.GetPointer() << "\n";
   os << indent << "ShaderPathSelection: "
      << (this->ShaderPathSelection == AUTOMATIC ? "Automatic" : "AsRequested") << "\n";
   os << indent << "MaterialDerivationRange: ";

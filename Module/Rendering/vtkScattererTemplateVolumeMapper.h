@@ -118,6 +118,7 @@
   vtkBooleanMacro(name, bool)
 // clang-format on
 
+class vtkScattererLightExchange;
 class vtkScattererTransportVolume;
 namespace scatterer_render
 {
@@ -216,6 +217,20 @@ public:
 
   /** Transport mode: the transport volume (its size, GPU bytes, build count, timing switch). */
   vtkScattererTransportVolume* GetTransportVolume() const;
+
+  ///@{
+  /**
+   * A piece of a distributed volume: the exchange that carries each light in from the
+   * other pieces (vtkScattererLightExchange; the ParaView plugin sets it). Its maps are
+   * used when they were made for this frame's lights, and then only the piece's own
+   * voxels attenuate light in its sweep. Otherwise the piece is lit through its own
+   * voxels and ghost layers only. Default: none.
+   */
+  void SetLightExchange(vtkScattererLightExchange* exchange);
+  vtkScattererLightExchange* GetLightExchange() const;
+  /** True when the last transport build used the exchange's maps. */
+  bool GetLightExchangeUsed() const;
+  ///@}
 
   /**
    * How far, in the volume's data units, the illumination of a sample reads the

@@ -64,6 +64,10 @@ std::uint64_t TransportKey(const vtkScattererTransportVolume::Inputs& in)
   f.Add(in.TablesVersion);
   f.Add(in.TexToWorld, 16);
   f.Add(in.TexToDataset, 16);
+  f.Add(in.TexToIndex, 16);
+  f.Add(in.OwnedOnly);
+  f.Add(in.OwnedLo, 3);
+  f.Add(in.OwnedHi, 3);
   f.Add(in.ClipPlanes);
   for (const auto& l : in.Lights)
   {
@@ -76,6 +80,7 @@ std::uint64_t TransportKey(const vtkScattererTransportVolume::Inputs& in)
     f.Add(l.Attenuation, 3);
     f.Add(l.ConeCos);
     f.Add(l.Exponent);
+    f.Add(l.Entering.get());
   }
   return f.Value();
 }

@@ -13,6 +13,7 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkShaderProgram.h"
+#include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
@@ -44,8 +45,30 @@ bool SweepTransmittance(const TransportPass& pass, const vtkScattererTransportVo
   program->SetUniform3f("st_lightPosition", light.Position);
   program->SetUniformi("st_lightPositional", light.Positional ? 1 : 0);
   program->SetUniformi("st_substeps", std::max(1, in.Downsample));
+  SetIndexUniforms(program, in);
+  // A piece of a distributed volume: the depth in front of it (1 texel of zeros when
+  // none, so the sampler is always bound).
+  const vtkScattererTransportVolume::EnteringDepth* entering = light.Entering.get();
+  const bool hasEntering = entering && entering->Size > 0 &&
+    entering->Depth.size() == static_cast<size_t>(entering->Size) * entering->Size;
+  vtkSmartPointer<vtkTextureObject> enteringTexture =
+    NewTransportTexture(pass.Window, true, vtkTextureObject::ClampToEdge);
+  float none = 0.0f;
+  enteringTexture->Create2DFromRaw(hasEntering ? entering->Size : 1,
+    hasEntering ? entering->Size : 1, 1, VTK_FLOAT,
+    hasEntering ? const_cast<float*>(entering->Depth.data()) : &none);
+  program->SetUniformi("st_entering", hasEntering ? (entering->Positional ? 2 : 1) : 0);
+  if (hasEntering)
+  {
+    program->SetUniform3f("st_enteringLight", entering->Light);
+    program->SetUniform3f("st_enteringU", entering->U);
+    program->SetUniform3f("st_enteringV", entering->V);
+    program->SetUniform2f("st_enteringLo", entering->Lo);
+    program->SetUniformf("st_enteringSide", entering->Side);
+  }
   ScopedVolume volume(program, in);
   ScopedSampler medium(program, "st_medium", pass.Tables.Medium);
+  ScopedSampler depthInFront(program, "st_enteringDepth", enteringTexture);
 
   pass.Window->GetState()->vtkglViewport(0, 0, sweepDims[0], sweepDims[1]);
   // Progress: kSweepSteps reports per sweep, the last one after the sweep

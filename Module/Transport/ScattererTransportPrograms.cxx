@@ -151,6 +151,17 @@ void SetSweepOrder(vtkShaderProgram* program, const SweepPlan& plan)
   program->SetUniformMatrix("st_toSweep", toSweep);
 }
 
+void SetIndexUniforms(vtkShaderProgram* program, const vtkScattererTransportVolume::Inputs& in)
+{
+  vtkNew<vtkMatrix4x4> texToIndex;
+  texToIndex->DeepCopy(in.TexToIndex);
+  texToIndex->Transpose(); // as in SetCommonUniforms
+  program->SetUniformMatrix("st_texToIndex", texToIndex);
+  program->SetUniformi("st_ownedOnly", in.OwnedOnly ? 1 : 0);
+  program->SetUniform3f("st_ownedLo", in.OwnedLo);
+  program->SetUniform3f("st_ownedHi", in.OwnedHi);
+}
+
 ScopedSampler::ScopedSampler(
   vtkShaderProgram* program, const char* sampler, vtkTextureObject* texture)
   : Texture(texture)

@@ -12,6 +12,14 @@
 // volume, in O(N) per light. Directional lights: one direction for all texels.
 // Positional lights: the direction toward the light per texel, and slices are
 // swept away from the light's own slice on both sides (the radial variant).
+//
+// A piece of a distributed volume (vtkScattererLightExchange): only the piece's own
+// matter attenuates here (st_ownedOnly), and the light that enters the piece has
+// already crossed the pieces in front of it, whose optical depth tau_front the
+// light-space map st_enteringDepth holds (scatterer/LightSpace.h). By Beer-Lambert
+// over the parts of the path,
+//   T(p) = T_piece(p) * exp(-tau_front(line through p))
+// The slices carry T_piece; the transmittance texture gets T.
 //============================================================================
 //VTK::Transport::Common
 in vec2 texCoord;
@@ -25,6 +33,60 @@ uniform vec3 st_lightToward;       // directional: unit vector toward the light 
 uniform vec3 st_lightPosition;     // positional: world position
 uniform int st_lightPositional;
 uniform int st_substeps;           // extinction samples per step (volume voxels per texel)
+uniform mat4 st_texToIndex;        // volume texture coordinates -> structured index
+uniform int st_ownedOnly;          // 1: only matter inside [st_ownedLo, st_ownedHi] attenuates
+uniform vec3 st_ownedLo;
+uniform vec3 st_ownedHi;
+uniform int st_entering;           // 0: none; 1: directional map; 2: positional (octahedral)
+uniform sampler2D st_enteringDepth;
+uniform vec3 st_enteringLight;     // positional: the light (index space)
+uniform vec3 st_enteringU;         // directional: the map plane's basis (index space)
+uniform vec3 st_enteringV;
+uniform vec2 st_enteringLo;        // directional: the map's corner on the plane
+uniform float st_enteringSide;     // directional: the map's side (index units)
+
+// Mirrors scatterer::lightspace::Map::coordinate.
+vec2 st_octahedral(vec3 d)
+{
+  vec2 p = d.xy / (abs(d.x) + abs(d.y) + abs(d.z));
+  if (d.z < 0.0)
+  {
+    vec2 s = vec2(p.x >= 0.0 ? 1.0 : -1.0, p.y >= 0.0 ? 1.0 : -1.0);
+    p = (vec2(1.0) - abs(p.yx)) * s;
+  }
+  return p;
+}
+
+// The optical depth in front of this piece on the light's line through index i.
+float st_depthInFront(vec3 i)
+{
+  if (st_entering == 0)
+  {
+    return 0.0;
+  }
+  vec2 c;
+  if (st_entering == 2)
+  {
+    vec3 d = i - st_enteringLight;
+    c = st_octahedral(length(d) > 0.0 ? normalize(d) : vec3(0.0, 0.0, 1.0)) * 0.5 + vec2(0.5);
+  }
+  else
+  {
+    c = (vec2(dot(i, st_enteringU), dot(i, st_enteringV)) - st_enteringLo) / st_enteringSide;
+  }
+  return texture(st_enteringDepth, c).r;
+}
+
+// Does the matter at texture position t attenuate in this sweep?
+bool st_attenuates(vec3 t)
+{
+  if (st_ownedOnly == 0)
+  {
+    return true;
+  }
+  vec3 i = (st_texToIndex * vec4(t, 1.0)).xyz;
+  return all(greaterThanEqual(i, st_ownedLo)) && all(lessThanEqual(i, st_ownedHi));
+}
 
 void main()
 {
@@ -51,8 +113,8 @@ void main()
     float tau = 0.0;
     for (int i = 0; i < st_substeps; ++i)
     {
-      vec3 g = j + stepGrid * ((float(i) + 0.5) / float(st_substeps));
-      tau += st_attenuationAt(st_gridToTexture(g));
+      vec3 g = st_gridToTexture(j + stepGrid * ((float(i) + 0.5) / float(st_substeps)));
+      tau += st_attenuates(g) ? st_attenuationAt(g) : 0.0;
     }
     tau *= len / float(st_substeps);
     // Outside the grid the light has crossed no matter: the border reads 1.
@@ -60,5 +122,6 @@ void main()
     T = Tq * exp(-tau);
   }
   gl_FragData[0] = vec4(T);
-  gl_FragData[1] = vec4(T);
+  vec3 index = (st_texToIndex * vec4(st_gridToTexture(j), 1.0)).xyz;
+  gl_FragData[1] = vec4(T * exp(-st_depthInFront(index)));
 }

@@ -34,7 +34,7 @@
 #include "vtkObject.h"
 
 #include <functional> // for the progress callback
-#include <memory>     // for Internals
+#include <memory>     // for Internals and Light::Entering
 #include <string>     // for Inputs
 #include <vector>     // for Inputs
 
@@ -49,6 +49,22 @@ public:
   vtkTypeMacro(vtkScattererTransportVolume, vtkObject);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  /**
+   * A piece of a distributed volume: the optical depth between a light and this piece
+   * that the other pieces hold, as a light-space map (scatterer/LightSpace.h, filled
+   * by vtkScattererLightExchange) over the whole volume's structured indices.
+   */
+  struct EnteringDepth
+  {
+    bool Positional = false;
+    float Light[3] = { 0, 0, 0 };                 ///< positional: the light (index space)
+    float U[3] = { 1, 0, 0 }, V[3] = { 0, 1, 0 }; ///< directional: the map plane's basis
+    float Lo[2] = { 0, 0 };                       ///< directional: the map's corner on the plane
+    float Side = 1;                               ///< directional: the map's side (index units)
+    int Size = 0;                                 ///< texels per side
+    std::vector<float> Depth;                     ///< Size x Size optical depths, row by row
+  };
+
   /** One light as the transport sees it (world coordinates). */
   struct Light
   {
@@ -61,6 +77,10 @@ public:
     float Attenuation[3] = { 1, 0, 0 };     ///< positional: 1 / (a0 + a1 d + a2 d^2)
     float ConeCos = -2.0f;                  ///< positional spot: cos(cone angle); < -1: none
     float Exponent = 1.0f;                  ///< positional spot exponent
+    /// A piece of a distributed volume: what the other pieces take of this light before
+    /// it enters this one (none: nothing does). Shared, not copied, frame to frame; a
+    /// new map is a new object.
+    std::shared_ptr<const EnteringDepth> Entering;
   };
 
   /** Everything one build needs; filled by the mapper every frame. */
@@ -81,6 +101,13 @@ public:
     float MaskBlend = 1;
     double TexToWorld[16] = {};   ///< volume texture coordinates -> world (row-major)
     double TexToDataset[16] = {}; ///< volume texture coordinates -> dataset (row-major)
+    double TexToIndex[16] = {};   ///< volume texture coordinates -> structured index (row-major)
+    /// A piece of a distributed volume: only the matter inside this box (structured
+    /// indices: the piece's own voxels) attenuates light in the sweep. The rest, its
+    /// ghost layers, belongs to other pieces, whose optical depth Light::Entering holds.
+    /// The ghost layers still scatter light.
+    bool OwnedOnly = false;
+    float OwnedLo[3] = { 0, 0, 0 }, OwnedHi[3] = { 0, 0, 0 };
     /// Over the normalised scalar [0, 1], 4 per entry: albedo rgb (the colour transfer
     /// function) and sigma_t per world unit (the opacity transfer function); MediumRows
     /// rows of equal length (a label-map mask: one per label value, 0..255).

@@ -12,7 +12,8 @@
 namespace ls = scatterer::lightspace;
 
 namespace {
-ls::Box box(double x0, double x1, double y0, double y1, double z0, double z1) {
+ls::Box box(double x0, double x1, double y0, double y1, double z0, double z1)
+{
   ls::Box b;
   b.lo = glm::dvec3(x0, y0, z0);
   b.hi = glm::dvec3(x1, y1, z1);
@@ -20,7 +21,8 @@ ls::Box box(double x0, double x1, double y0, double y1, double z0, double z1) {
 }
 
 // sigma on points 0..n-1 per axis: constant, or varying (a smooth bump plus a ramp).
-ls::ExtinctionGrid grid(int n, bool varying) {
+ls::ExtinctionGrid grid(int n, bool varying)
+{
   ls::ExtinctionGrid g;
   g.dims = glm::ivec3(n);
   g.sigma.resize(static_cast<size_t>(n) * n * n);
@@ -29,34 +31,40 @@ ls::ExtinctionGrid grid(int n, bool varying) {
       for (int x = 0; x < n; ++x) {
         const double r2 = (x - 9.0) * (x - 9.0) + (y - 7.0) * (y - 7.0) + (z - 8.0) * (z - 8.0);
         g.sigma[x + n * (y + static_cast<size_t>(n) * z)] =
-            varying ? static_cast<float>(0.05 + 0.4 * std::exp(-r2 / 30.0) + 0.01 * x) : 0.5f;
+          varying ? static_cast<float>(0.05 + 0.4 * std::exp(-r2 / 30.0) + 0.01 * x) : 0.5f;
       }
     }
   }
   return g;
 }
 
-size_t at(const ls::Map& m, int i, int j) { return static_cast<size_t>(j) * m.size + i; }
+size_t at(const ls::Map& m, int i, int j)
+{
+  return static_cast<size_t>(j) * m.size + i;
+}
 } // namespace
 
-TEST(LightSpace, OctahedralMapRoundTrips) {
-  for (const glm::dvec3 d : {glm::dvec3(1, 0, 0), glm::dvec3(0.3, -0.5, 0.8), glm::dvec3(-0.2, 0.4, -0.9),
-           glm::dvec3(0, 0, -1), glm::dvec3(-1, -1, -1)}) {
+TEST(LightSpace, OctahedralMapRoundTrips)
+{
+  for (const glm::dvec3 d : { glm::dvec3(1, 0, 0), glm::dvec3(0.3, -0.5, 0.8),
+         glm::dvec3(-0.2, 0.4, -0.9), glm::dvec3(0, 0, -1), glm::dvec3(-1, -1, -1) }) {
     const glm::dvec3 u = glm::normalize(d);
     EXPECT_LT(glm::length(ls::octahedralDecode(ls::octahedralEncode(u)) - u), 1e-12);
   }
 }
 
-TEST(LightSpace, EveryPointOfALineLooksUpItsOwnTexel) {
+TEST(LightSpace, EveryPointOfALineLooksUpItsOwnTexel)
+{
   const ls::Box whole = box(0, 20, 0, 16, 0, 12);
-  const ls::Map maps[] = {ls::directionalMap(glm::dvec3(0.3, -1.0, 0.4), whole, 1.5, 256),
-      ls::positionalMap(glm::dvec3(8, 5, 30), 64), ls::positionalMap(glm::dvec3(8, 5, 6), 64)};
+  const ls::Map maps[] = { ls::directionalMap(glm::dvec3(0.3, -1.0, 0.4), whole, 1.5, 256),
+    ls::positionalMap(glm::dvec3(8, 5, 30), 64), ls::positionalMap(glm::dvec3(8, 5, 6), 64) };
   for (const ls::Map& m : maps) {
     for (int j = 1; j < m.size - 1; j += 5) {
       for (int i = 1; i < m.size - 1; i += 7) {
         const ls::Line l = m.line(i, j);
-        for (double t : {0.5, 3.0, 11.0}) {
-          const glm::dvec2 c = m.coordinate(l.origin + l.direction * t) * static_cast<double>(m.size);
+        for (double t : { 0.5, 3.0, 11.0 }) {
+          const glm::dvec2 c =
+            m.coordinate(l.origin + l.direction * t) * static_cast<double>(m.size);
           EXPECT_NEAR(c.x, i + 0.5, 1e-9);
           EXPECT_NEAR(c.y, j + 0.5, 1e-9);
         }
@@ -65,7 +73,8 @@ TEST(LightSpace, EveryPointOfALineLooksUpItsOwnTexel) {
   }
 }
 
-TEST(LightSpace, DirectionalMapCoversTheWholeVolume) {
+TEST(LightSpace, DirectionalMapCoversTheWholeVolume)
+{
   const ls::Box whole = box(0, 40, 0, 30, 0, 20);
   const ls::Map m = ls::directionalMap(glm::dvec3(1, 2, 3), whole, 2.0, 1024);
   for (int c = 0; c < 8; ++c) {
@@ -85,33 +94,37 @@ TEST(LightSpace, DirectionalMapCoversTheWholeVolume) {
   EXPECT_THROW(ls::positionalMap(glm::dvec3(1.0), 1), std::invalid_argument);
 }
 
-TEST(LightSpace, OpticalDepthOfAUniformSlabIsSigmaTimesWorldLength) {
+TEST(LightSpace, OpticalDepthOfAUniformSlabIsSigmaTimesWorldLength)
+{
   // sigma 0.5 per world unit, 10 index units of 2 world units along the light.
   const ls::ExtinctionGrid g = grid(16, false);
   const glm::dmat3 indexToWorld(2.0);
   const ls::Map m = ls::directionalMap(glm::dvec3(1, 0, 0), box(0, 15, 0, 15, 0, 15), 1.0, 64);
-  const std::vector<float> depth = ls::opticalDepth(m, g, box(2, 12, 0, 15, 0, 15), indexToWorld, 0.7);
+  const std::vector<float> depth =
+    ls::opticalDepth(m, g, box(2, 12, 0, 15, 0, 15), indexToWorld, 0.7);
   const glm::dvec3 centre(7.0, 7.5, 7.5);
   const glm::dvec2 c = m.coordinate(centre) * static_cast<double>(m.size);
   EXPECT_NEAR(depth[at(m, static_cast<int>(c.x), static_cast<int>(c.y))], 0.5 * 10 * 2, 1e-4);
   // Outside the box: nothing.
   EXPECT_EQ(depth[at(m, 0, 0)], 0.0f);
-  EXPECT_THROW(ls::opticalDepth(m, g, box(0, 1, 0, 1, 0, 1), indexToWorld, 0.0), std::invalid_argument);
+  EXPECT_THROW(
+    ls::opticalDepth(m, g, box(0, 1, 0, 1, 0, 1), indexToWorld, 0.0), std::invalid_argument);
 }
 
-TEST(LightSpace, ThePieceNearerTheLightIsInFront) {
+TEST(LightSpace, ThePieceNearerTheLightIsInFront)
+{
   const ls::ExtinctionGrid g = grid(16, false);
   const glm::dmat3 unit(1.0);
   const ls::Box whole = box(0, 15, 0, 15, 0, 15);
-  const std::vector<ls::Box> owned = {box(0, 5, 0, 15, 0, 15), box(5, 15, 0, 15, 0, 15)};
+  const std::vector<ls::Box> owned = { box(0, 5, 0, 15, 0, 15), box(5, 15, 0, 15, 0, 15) };
   const glm::dvec3 p(2.0, 7.5, 7.5); // in piece 0
-  for (const bool fromPlusX : {true, false}) {
+  for (const bool fromPlusX : { true, false }) {
     const ls::Map m = ls::directionalMap(glm::dvec3(fromPlusX ? 1 : -1, 0, 0), whole, 1.0, 64);
     std::vector<std::vector<float>> d;
     for (const auto& b : owned) {
       d.push_back(ls::opticalDepth(m, g, b, unit, 0.5));
     }
-    const std::vector<const float*> depths = {d[0].data(), d[1].data()};
+    const std::vector<const float*> depths = { d[0].data(), d[1].data() };
     const glm::dvec2 c = m.coordinate(p) * static_cast<double>(m.size);
     const size_t texel = at(m, static_cast<int>(c.x), static_cast<int>(c.y));
     const std::vector<float> e0 = ls::enteringDepth(m, owned, 0, owned[0], depths);
@@ -127,23 +140,26 @@ TEST(LightSpace, ThePieceNearerTheLightIsInFront) {
   for (const auto& b : owned) {
     d.push_back(ls::opticalDepth(m, g, b, unit, 0.25));
   }
-  const std::vector<const float*> depths = {d[0].data(), d[1].data()};
+  const std::vector<const float*> depths = { d[0].data(), d[1].data() };
   const glm::dvec2 c = m.coordinate(p) * static_cast<double>(m.size);
   const size_t texel = at(m, static_cast<int>(c.x), static_cast<int>(c.y));
   EXPECT_NEAR(ls::enteringDepth(m, owned, 0, owned[0], depths)[texel], 0.5 * 4.0, 0.05);
   EXPECT_NEAR(ls::enteringDepth(m, owned, 1, owned[1], depths)[texel], 0.0, 1e-6);
 }
 
-TEST(LightSpace, FourPiecesAddUpToTheWholeVolume) {
+TEST(LightSpace, FourPiecesAddUpToTheWholeVolume)
+{
   // Exactness of the exchange: on every line, the depth in front of the farthest piece
   // plus that piece's own is what one process sees through the whole volume.
   const ls::ExtinctionGrid g = grid(20, true);
-  const glm::dmat3 indexToWorld(glm::dvec3(1.0, 0.0, 0.0), glm::dvec3(0.0, 1.2, 0.0), glm::dvec3(0.0, 0.0, 0.8));
+  const glm::dmat3 indexToWorld(
+    glm::dvec3(1.0, 0.0, 0.0), glm::dvec3(0.0, 1.2, 0.0), glm::dvec3(0.0, 0.0, 0.8));
   const ls::Box whole = box(0, 19, 0, 19, 0, 19);
-  const std::vector<ls::Box> owned = {box(0, 8, 0, 11, 0, 19), box(8, 19, 0, 11, 0, 19),
-      box(0, 8, 11, 19, 0, 19), box(8, 19, 11, 19, 0, 19)};
-  const ls::Map maps[] = {ls::directionalMap(glm::dvec3(0.6, 0.8, 0.3), whole, 1.0, 256),
-      ls::positionalMap(glm::dvec3(30.0, 25.0, 9.0), 128), ls::positionalMap(glm::dvec3(14.0, 14.0, 9.0), 128)};
+  const std::vector<ls::Box> owned = { box(0, 8, 0, 11, 0, 19), box(8, 19, 0, 11, 0, 19),
+    box(0, 8, 11, 19, 0, 19), box(8, 19, 11, 19, 0, 19) };
+  const ls::Map maps[] = { ls::directionalMap(glm::dvec3(0.6, 0.8, 0.3), whole, 1.0, 256),
+    ls::positionalMap(glm::dvec3(30.0, 25.0, 9.0), 128),
+    ls::positionalMap(glm::dvec3(14.0, 14.0, 9.0), 128) };
   for (const ls::Map& m : maps) {
     const std::vector<float> all = ls::opticalDepth(m, g, whole, indexToWorld, 0.25);
     std::vector<std::vector<float>> d;
@@ -175,7 +191,8 @@ TEST(LightSpace, FourPiecesAddUpToTheWholeVolume) {
           continue;
         }
         const double total = all[at(m, i, j)];
-        EXPECT_NEAR(entering[last][at(m, i, j)] + d[last][at(m, i, j)], total, 0.02 * total + 1e-3) << i << "," << j;
+        EXPECT_NEAR(entering[last][at(m, i, j)] + d[last][at(m, i, j)], total, 0.02 * total + 1e-3)
+          << i << "," << j;
         ++checked;
       }
     }

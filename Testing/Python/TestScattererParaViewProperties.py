@@ -12,7 +12,7 @@ from scatterertemplate import vtkScattererTemplateVolumeMapper
 XML = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "ParaView", "Plugin",
                    "ScattererVolumeRepresentation.xml")
 # Representation-only settings (no mapper counterpart).
-NOT_MAPPER = {"SetGhostLayers"}
+NOT_MAPPER = {"SetGhostLayers", "SetLightExchangeEnabled"}
 
 failures = []
 

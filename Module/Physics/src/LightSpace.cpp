@@ -11,9 +11,13 @@
 namespace scatterer {
 namespace lightspace {
 
-bool Box::empty() const { return lo.x > hi.x || lo.y > hi.y || lo.z > hi.z; }
+bool Box::empty() const
+{
+  return lo.x > hi.x || lo.y > hi.y || lo.z > hi.z;
+}
 
-Line Map::line(int i, int j) const {
+Line Map::line(int i, int j) const
+{
   Line l;
   if (positional) {
     const glm::dvec2 p((i + 0.5) / size * 2.0 - 1.0, (j + 0.5) / size * 2.0 - 1.0);
@@ -28,7 +32,8 @@ Line Map::line(int i, int j) const {
   return l;
 }
 
-glm::dvec2 Map::coordinate(const glm::dvec3& p) const {
+glm::dvec2 Map::coordinate(const glm::dvec3& p) const
+{
   if (positional) {
     const glm::dvec3 d = p - light;
     const double length = glm::length(d);
@@ -38,7 +43,8 @@ glm::dvec2 Map::coordinate(const glm::dvec3& p) const {
   return (glm::dvec2(glm::dot(p, u), glm::dot(p, v)) - lo) / (texel * size);
 }
 
-Map directionalMap(const glm::dvec3& towardLight, const Box& whole, double texel, int maxSize) {
+Map directionalMap(const glm::dvec3& towardLight, const Box& whole, double texel, int maxSize)
+{
   const double length = glm::length(towardLight);
   if (!(length > 0.0) || !std::isfinite(length)) {
     throw std::invalid_argument("lightspace::directionalMap: the light direction is zero");
@@ -48,7 +54,7 @@ Map directionalMap(const glm::dvec3& towardLight, const Box& whole, double texel
   }
   if (!(texel > 0.0) || maxSize < 2) {
     throw std::invalid_argument(
-        "lightspace::directionalMap: the texel must be > 0 and the map at least 2 texels wide");
+      "lightspace::directionalMap: the texel must be > 0 and the map at least 2 texels wide");
   }
   Map map;
   map.travel = -towardLight / length;
@@ -60,7 +66,7 @@ Map directionalMap(const glm::dvec3& towardLight, const Box& whole, double texel
   glm::dvec2 hi(-std::numeric_limits<double>::infinity());
   for (int c = 0; c < 8; ++c) {
     const glm::dvec3 p((c & 1) ? whole.hi.x : whole.lo.x, (c & 2) ? whole.hi.y : whole.lo.y,
-        (c & 4) ? whole.hi.z : whole.lo.z);
+      (c & 4) ? whole.hi.z : whole.lo.z);
     const glm::dvec2 q(glm::dot(p, map.u), glm::dot(p, map.v));
     lo = glm::min(lo, q);
     hi = glm::max(hi, q);
@@ -77,9 +83,11 @@ Map directionalMap(const glm::dvec3& towardLight, const Box& whole, double texel
   return map;
 }
 
-Map positionalMap(const glm::dvec3& light, int size) {
+Map positionalMap(const glm::dvec3& light, int size)
+{
   if (size < 2) {
-    throw std::invalid_argument("lightspace::positionalMap: the map must be at least 2 texels wide");
+    throw std::invalid_argument(
+      "lightspace::positionalMap: the map must be at least 2 texels wide");
   }
   Map map;
   map.positional = true;
@@ -88,7 +96,8 @@ Map positionalMap(const glm::dvec3& light, int size) {
   return map;
 }
 
-glm::dvec2 octahedralEncode(const glm::dvec3& d) {
+glm::dvec2 octahedralEncode(const glm::dvec3& d)
+{
   const double n = std::abs(d.x) + std::abs(d.y) + std::abs(d.z);
   glm::dvec2 p(d.x / n, d.y / n);
   if (d.z < 0.0) {
@@ -98,7 +107,8 @@ glm::dvec2 octahedralEncode(const glm::dvec3& d) {
   return p;
 }
 
-glm::dvec3 octahedralDecode(const glm::dvec2& p) {
+glm::dvec3 octahedralDecode(const glm::dvec2& p)
+{
   glm::dvec3 d(p.x, p.y, 1.0 - std::abs(p.x) - std::abs(p.y));
   if (d.z < 0.0) {
     const glm::dvec2 s(p.x >= 0.0 ? 1.0 : -1.0, p.y >= 0.0 ? 1.0 : -1.0);
@@ -109,7 +119,8 @@ glm::dvec3 octahedralDecode(const glm::dvec2& p) {
   return glm::normalize(d);
 }
 
-bool clip(const Line& line, const Box& box, double& t0, double& t1) {
+bool clip(const Line& line, const Box& box, double& t0, double& t1)
+{
   if (box.empty()) {
     return false;
   }
@@ -133,7 +144,8 @@ bool clip(const Line& line, const Box& box, double& t0, double& t1) {
   return t0 < t1;
 }
 
-double ExtinctionGrid::at(const glm::dvec3& p) const {
+double ExtinctionGrid::at(const glm::dvec3& p) const
+{
   if (dims.x < 1 || dims.y < 1 || dims.z < 1) {
     return 0.0;
   }
@@ -162,7 +174,8 @@ double ExtinctionGrid::at(const glm::dvec3& p) const {
 }
 
 std::vector<float> opticalDepth(const Map& map, const ExtinctionGrid& grid, const Box& owned,
-    const glm::dmat3& indexToWorld, double step) {
+  const glm::dmat3& indexToWorld, double step)
+{
   if (!(step > 0.0)) {
     throw std::invalid_argument("lightspace::opticalDepth: the step must be > 0");
   }
@@ -186,12 +199,12 @@ std::vector<float> opticalDepth(const Map& map, const ExtinctionGrid& grid, cons
         }
         // Beer-Lambert's exponent over this piece: sigma_t times world length.
         depth[static_cast<size_t>(j) * map.size + i] =
-            static_cast<float>(sum * dt * glm::length(indexToWorld * l.direction));
+          static_cast<float>(sum * dt * glm::length(indexToWorld * l.direction));
       }
     }
   };
   const int threads =
-      std::max(1, std::min<int>(static_cast<int>(std::thread::hardware_concurrency()), map.size));
+    std::max(1, std::min<int>(static_cast<int>(std::thread::hardware_concurrency()), map.size));
   std::vector<std::thread> workers;
   for (int t = 1; t < threads; ++t) {
     workers.emplace_back(rows, map.size * t / threads, map.size * (t + 1) / threads);
@@ -204,7 +217,8 @@ std::vector<float> opticalDepth(const Map& map, const ExtinctionGrid& grid, cons
 }
 
 std::vector<float> enteringDepth(const Map& map, const std::vector<Box>& owned, int self,
-    const Box& selfReach, const std::vector<const float*>& depths) {
+  const Box& selfReach, const std::vector<const float*>& depths)
+{
   std::vector<float> entering(static_cast<size_t>(map.size) * map.size, 0.0f);
   for (int j = 0; j < map.size; ++j) {
     for (int i = 0; i < map.size; ++i) {

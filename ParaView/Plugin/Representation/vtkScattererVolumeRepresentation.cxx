@@ -9,9 +9,13 @@
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkMultiProcessController.h"
+#include "vtkPVRenderView.h"
 #include "vtkPVView.h"
+#include "vtkRenderer.h"
 #include "vtkPointData.h"
 #include "vtkRenderWindow.h"
+#include "vtkScattererLightExchange.h"
 #include "vtkScattererTemplateVolumeMapper.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
@@ -43,7 +47,63 @@ vtkScattererVolumeRepresentation::vtkScattererVolumeRepresentation()
   // the mapper that does the long work in the first frame.
   mapper->AddObserver(
     vtkCommand::ProgressEvent, this, &vtkScattererVolumeRepresentation::ForwardMapperProgress);
+  this->LightExchange->SetController(vtkMultiProcessController::GetGlobalController());
+  mapper->SetLightExchange(this->LightExchange);
   this->VolumeMapper = mapper;
+}
+
+bool vtkScattererVolumeRepresentation::AddToView(vtkView* view)
+{
+  auto* renderView = vtkPVRenderView::SafeDownCast(view);
+  if (renderView && !this->ObservedRenderer)
+  {
+    // After ParaView's own StartEvent observers (priority 0), which synchronise the
+    // camera across ranks: the exchange needs this frame's lights.
+    this->ObservedRenderer = renderView->GetRenderer();
+    this->ExchangeObserver = this->ObservedRenderer->AddObserver(
+      vtkCommand::StartEvent, this, &vtkScattererVolumeRepresentation::ExchangeLight, -1.0f);
+  }
+  return this->Superclass::AddToView(view);
+}
+
+bool vtkScattererVolumeRepresentation::RemoveFromView(vtkView* view)
+{
+  auto* renderView = vtkPVRenderView::SafeDownCast(view);
+  if (renderView && this->ObservedRenderer == renderView->GetRenderer())
+  {
+    this->ObservedRenderer->RemoveObserver(this->ExchangeObserver);
+    this->ObservedRenderer = nullptr;
+  }
+  return this->Superclass::RemoveFromView(view);
+}
+
+void vtkScattererVolumeRepresentation::ExchangeLight(vtkObject*, unsigned long, void*)
+{
+  // Collective: the conditions are the same on every rank (the number of pieces, the
+  // visibility, the settings); a rank without a piece takes part with none.
+  if (this->Pieces <= 1 || !this->GetVisibility())
+  {
+    return;
+  }
+  vtkImageData* piece =
+    this->RendersOwnedPartOnly ? vtkImageData::SafeDownCast(this->Cache) : nullptr;
+  this->LightExchange->Exchange(this->ObservedRenderer, this->Actor, this->GetScattererMapper(),
+    piece, this->OwnedExtent, this->WholeExtent);
+  this->LightExchangeInfo[0] = this->LightExchange->GetExchangeCount();
+  this->LightExchangeInfo[1] = this->LightExchange->GetLastExchangeMilliseconds();
+  this->LightExchangeInfo[2] = this->LightExchange->GetLastExchangeBytes();
+}
+
+void vtkScattererVolumeRepresentation::SetLightExchangeEnabled(int exchange)
+{
+  this->LightExchange->SetEnabled(exchange != 0);
+  this->MarkModified();
+}
+
+double* vtkScattererVolumeRepresentation::GetLightExchangeInfo()
+{
+  this->LightExchangeInfo[3] = this->GetScattererMapper()->GetLightExchangeUsed() ? 1.0 : 0.0;
+  return this->LightExchangeInfo;
 }
 
 void vtkScattererVolumeRepresentation::ForwardMapperProgress(
@@ -114,6 +174,7 @@ int vtkScattererVolumeRepresentation::RequestUpdateExtent(
     return 0;
   }
   this->RequestedGhostLevels = 0;
+  this->Pieces = 1;
   for (int i = 0; i < inputVector[0]->GetNumberOfInformationObjects(); ++i)
   {
     vtkInformation* inInfo = inputVector[0]->GetInformationObject(i);
@@ -121,6 +182,11 @@ int vtkScattererVolumeRepresentation::RequestUpdateExtent(
     const int pieces = inInfo->Has(SDDP::UPDATE_NUMBER_OF_PIECES())
       ? inInfo->Get(SDDP::UPDATE_NUMBER_OF_PIECES())
       : 1;
+    this->Pieces = std::max(this->Pieces, pieces);
+    if (inInfo->Has(SDDP::WHOLE_EXTENT()))
+    {
+      inInfo->Get(SDDP::WHOLE_EXTENT(), this->WholeExtent);
+    }
     if (pieces <= 1 || !inInfo->Has(vtkDataObject::SPACING()))
     {
       continue;
@@ -169,6 +235,7 @@ int vtkScattererVolumeRepresentation::RequestData(
   }
   // Keep the ghost layers for the illumination; render only the owned bounds.
   owned->GetBounds(this->OwnedBounds);
+  owned->GetExtent(this->OwnedExtent);
   vtkSmartPointer<vtkImageData> ghosted = vtkSmartPointer<vtkImageData>::New();
   ghosted->ShallowCopy(input);
   // The ghost flags are for the superclass's crop above; the ray caster must see
@@ -251,6 +318,9 @@ void vtkScattererVolumeRepresentation::PrintSelf(ostream& os, vtkIndent indent)
        << this->OwnedBounds[2] << ", " << this->OwnedBounds[3] << ", " << this->OwnedBounds[4]
        << ", " << this->OwnedBounds[5] << ")\n";
   }
+  os << indent << "Pieces: " << this->Pieces << "\n";
+  os << indent << "LightExchange:\n";
+  this->LightExchange->PrintSelf(os, indent.GetNextIndent());
   os << indent << "ScattererMapper:\n";
   this->VolumeMapper->PrintSelf(os, indent.GetNextIndent());
 }

@@ -19,6 +19,12 @@
  * sub-extents (e.g. MetaImage) put the whole volume on one rank: that renders
  * correctly, just not in parallel.
  *
+ * Shadows across pieces: ghost layers hold only what is local to a sample. Before
+ * each frame renders (its renderer's StartEvent, raised on every rank), the ranks
+ * exchange the optical depth of their pieces along each light
+ * (vtkScattererLightExchange, through ParaView's global controller), and each piece's
+ * transport sweep starts with the light that the pieces in front of it let through.
+ *
  * Progress: the mapper's ProgressEvent while it rebuilds its illumination (templates,
  * then the GPU stages of the light transport volume) is re-sent as this
  * representation's own, which ParaView's progress handler observes: the progress bar
@@ -34,7 +40,9 @@
 
 #include "ScattererParaViewRepresentationModule.h" // for export macro
 #include "vtkImageVolumeRepresentation.h"
+#include "vtkNew.h" // for LightExchange
 
+class vtkScattererLightExchange;
 class vtkScattererTemplateVolumeMapper;
 
 class SCATTERERPARAVIEWREPRESENTATION_EXPORT vtkScattererVolumeRepresentation
@@ -82,6 +90,21 @@ public:
   vtkGetMacro(GhostLayers, int);
   ///@}
 
+  ///@{
+  /**
+   * Split data (several ranks): exchange the light between the pieces (default on),
+   * so a piece is shaded by every piece between it and the light. Off: by its own
+   * voxels and ghost layers only (the control of the tests).
+   */
+  void SetLightExchangeEnabled(int exchange);
+  ///@}
+
+  /**
+   * This rank's light exchange: exchanges so far, milliseconds and bytes received of
+   * the last one, and 1 if the last frame's transport used its maps.
+   */
+  double* GetLightExchangeInfo();
+
   /** Ghost layers the last update asked for (0 when the data is not split). */
   vtkGetMacro(RequestedGhostLevels, int);
 
@@ -106,8 +129,13 @@ protected:
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
   void UpdateMapperParameters() override;
+  bool AddToView(vtkView* view) override;
+  bool RemoveFromView(vtkView* view) override;
 
 private:
+  /** Before each frame renders, on every rank: the light exchange between the pieces. */
+  void ExchangeLight(vtkObject* caller, unsigned long event, void* callData);
+
   /** The mapper's ProgressEvent, re-sent as this representation's. */
   void ForwardMapperProgress(vtkObject* caller, unsigned long event, void* callData);
 
@@ -119,6 +147,13 @@ private:
   int UserCropping = 0;
   bool RendersOwnedPartOnly = false; // the cache holds ghost layers beyond OwnedBounds
   double OwnedBounds[6] = { 0, -1, 0, -1, 0, -1 };
+  int OwnedExtent[6] = { 0, -1, 0, -1, 0, -1 };
+  int WholeExtent[6] = { 0, -1, 0, -1, 0, -1 };
+  int Pieces = 1; // the data is split into this many pieces (the same on every rank)
+  vtkNew<vtkScattererLightExchange> LightExchange;
+  vtkRenderer* ObservedRenderer = nullptr;
+  unsigned long ExchangeObserver = 0;
+  double LightExchangeInfo[4] = { 0, 0, 0, 0 };
 };
 
 #endif

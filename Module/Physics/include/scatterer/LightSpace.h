@@ -34,29 +34,29 @@ namespace lightspace {
 
 // An axis-aligned box in structured-index space; empty when lo > hi on any axis.
 struct Box {
-  glm::dvec3 lo{0.0};
-  glm::dvec3 hi{-1.0};
+  glm::dvec3 lo{ 0.0 };
+  glm::dvec3 hi{ -1.0 };
   bool empty() const;
 };
 
 // The points origin + t * direction for t >= tMin; t grows the way the light
 // travels (away from the light).
 struct Line {
-  glm::dvec3 origin{0.0};
-  glm::dvec3 direction{0.0, 0.0, 1.0};
+  glm::dvec3 origin{ 0.0 };
+  glm::dvec3 direction{ 0.0, 0.0, 1.0 };
   double tMin = 0.0;
 };
 
 // The lines of one light, size x size of them (texel (i, j) at row j).
 struct Map {
   bool positional = false;
-  glm::dvec3 light{0.0};            // positional: the light's position
-  glm::dvec3 travel{0.0, 0.0, -1.0}; // directional: unit direction the light travels
-  glm::dvec3 u{1.0, 0.0, 0.0};      // directional: orthonormal plane basis, orthogonal
-  glm::dvec3 v{0.0, 1.0, 0.0};      //   to travel
-  glm::dvec2 lo{0.0};               // directional: plane coordinates of the map's corner
-  double texel = 1.0;               // directional: texel size in index units
-  int size = 1;                     // texels per side
+  glm::dvec3 light{ 0.0 };             // positional: the light's position
+  glm::dvec3 travel{ 0.0, 0.0, -1.0 }; // directional: unit direction the light travels
+  glm::dvec3 u{ 1.0, 0.0, 0.0 };       // directional: orthonormal plane basis, orthogonal
+  glm::dvec3 v{ 0.0, 1.0, 0.0 };       //   to travel
+  glm::dvec2 lo{ 0.0 };                // directional: plane coordinates of the map's corner
+  double texel = 1.0;                  // directional: texel size in index units
+  int size = 1;                        // texels per side
 
   // The line through the centre of texel (i, j).
   Line line(int i, int j) const;
@@ -85,8 +85,8 @@ bool clip(const Line& line, const Box& box, double& t0, double& t1);
 // sigma_t per world unit on a grid of points (x fastest), structured index of the
 // first point `origin`; trilinear between points, clamped at the grid's border.
 struct ExtinctionGrid {
-  glm::ivec3 origin{0};
-  glm::ivec3 dims{0};
+  glm::ivec3 origin{ 0 };
+  glm::ivec3 dims{ 0 };
   std::vector<float> sigma;
   double at(const glm::dvec3& p) const;
 };
@@ -97,7 +97,7 @@ struct ExtinctionGrid {
 // most `step` index units. size * size values, row j = texel row j. Throws
 // std::invalid_argument for step <= 0.
 std::vector<float> opticalDepth(const Map& map, const ExtinctionGrid& grid, const Box& owned,
-    const glm::dmat3& indexToWorld, double step);
+  const glm::dmat3& indexToWorld, double step);
 
 // The optical depth in front of piece `self` on every line: the sum of depths[j]
 // over the pieces j whose part of the line lies before self's (nearer the light).
@@ -105,7 +105,7 @@ std::vector<float> opticalDepth(const Map& map, const ExtinctionGrid& grid, cons
 // piece holds, ghost layers included) says where self is on it; lines missing both
 // get 0. depths[j] may be null for a piece that holds nothing.
 std::vector<float> enteringDepth(const Map& map, const std::vector<Box>& owned, int self,
-    const Box& selfReach, const std::vector<const float*>& depths);
+  const Box& selfReach, const std::vector<const float*>& depths);
 
 } // namespace lightspace
 } // namespace scatterer

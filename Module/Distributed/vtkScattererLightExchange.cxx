@@ -1,0 +1,366 @@
+#include "vtkScattererLightExchange.h"
+
+#include "ScattererChangeKey.h"
+#include "ScattererSceneLights.h"
+#include "vtkScattererTemplateVolumeMapper.h"
+
+#include "vtkAbstractMapper.h"
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkMatrix3x3.h"
+#include "vtkMatrix4x4.h"
+#include "vtkMultiProcessController.h"
+#include "vtkObjectFactory.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkRenderer.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
+#include <scatterer/LightSpace.h>
+#include <scatterer/Transport.h>
+
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+vtkStandardNewMacro(vtkScattererLightExchange);
+vtkCxxSetObjectMacro(vtkScattererLightExchange, Controller, vtkMultiProcessController);
+
+namespace ls = scatterer::lightspace;
+
+namespace
+{
+// Entries of the opacity table over the scalar range (as the transport's medium table).
+constexpr int kTableSize = 4096;
+// The largest map side: 1024^2 x 4 bytes per light and rank.
+constexpr int kMaxMapSize = 1024;
+// Per rank in the header AllGather: holds a piece, owned box (6), lights, floats.
+constexpr int kHeader = 9;
+
+// Structured index -> world, for one image in its volume: world = A i + b.
+struct IndexFrame
+{
+  glm::dmat3 A{ 1.0 };
+  glm::dvec3 b{ 0.0 };
+  bool Valid = false;
+};
+
+IndexFrame FrameOf(vtkImageData* image, vtkVolume* volume)
+{
+  IndexFrame f;
+  double indexToPhysical[16];
+  image->ComputeIndexToPhysicalMatrix(image->GetOrigin(), image->GetSpacing(),
+    image->GetDirectionMatrix()->GetData(), indexToPhysical);
+  vtkNew<vtkMatrix4x4> indexToWorld;
+  vtkMatrix4x4::Multiply4x4(volume->GetMatrix()->GetData(), indexToPhysical, indexToWorld->GetData());
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      f.A[c][r] = indexToWorld->GetElement(r, c); // glm: column-major
+    }
+    f.b[r] = indexToWorld->GetElement(r, 3);
+  }
+  f.Valid = std::abs(glm::determinant(f.A)) > 0.0;
+  return f;
+}
+
+// The light-space map of one light, the same on every rank (it depends on the light,
+// the whole volume and the settings only).
+ls::Map MapOf(const vtkScattererTransportVolume::Light& light, const IndexFrame& frame,
+  const ls::Box& whole, double texel)
+{
+  const glm::dmat3 toIndex = glm::inverse(frame.A);
+  if (light.Positional)
+  {
+    const glm::dvec3 p(light.Position[0], light.Position[1], light.Position[2]);
+    const glm::dvec3 extent = whole.hi - whole.lo;
+    const double longest = std::max({ extent.x, extent.y, extent.z });
+    const int size = std::min(kMaxMapSize, std::max(64, static_cast<int>(2.0 * longest / texel)));
+    return ls::positionalMap(toIndex * (p - frame.b), size);
+  }
+  const glm::dvec3 toward(light.Toward[0], light.Toward[1], light.Toward[2]);
+  return ls::directionalMap(toIndex * toward, whole, texel, kMaxMapSize);
+}
+
+ls::Box BoxOf(const int extent[6])
+{
+  ls::Box b;
+  b.lo = glm::dvec3(extent[0], extent[2], extent[4]);
+  b.hi = glm::dvec3(extent[1], extent[3], extent[5]);
+  return b;
+}
+}
+
+struct vtkScattererLightExchange::vtkInternals
+{
+  scatterer_render::ChangeKey Inputs; // of the last exchange
+  scatterer_render::ChangeKey Sigma;  // of the extinction grid
+  ls::ExtinctionGrid Grid;
+
+  /** sigma_t x OcclusionStrength per world unit at every point of @p piece; false if
+   * the piece has no single-component point scalars the mapper would render. */
+  bool UpdateGrid(vtkImageData* piece, vtkVolume* volume, vtkScattererTemplateVolumeMapper* mapper,
+    float occlusion, std::string& key);
+};
+
+bool vtkScattererLightExchange::vtkInternals::UpdateGrid(vtkImageData* piece, vtkVolume* volume,
+  vtkScattererTemplateVolumeMapper* mapper, float occlusion, std::string& key)
+{
+  int cellFlag = 0;
+  vtkDataArray* scalars = vtkAbstractMapper::GetScalars(piece, mapper->GetScalarMode(),
+    mapper->GetArrayAccessMode(), mapper->GetArrayId(), mapper->GetArrayName(), cellFlag);
+  vtkVolumeProperty* property = volume->GetProperty();
+  vtkPiecewiseFunction* opacity = property ? property->GetScalarOpacity(0) : nullptr;
+  if (!scalars || cellFlag != 0 || scalars->GetNumberOfComponents() != 1 || !opacity)
+  {
+    return false;
+  }
+  const double unit = property->GetScalarOpacityUnitDistance(0) > 0.0
+    ? property->GetScalarOpacityUnitDistance(0)
+    : 1.0;
+  scatterer_render::KeyWriter k;
+  k << piece->GetMTime() << '|' << scalars->GetMTime() << '|' << opacity->GetMTime() << '|'
+    << unit << '|' << occlusion;
+  key = k.Key();
+  if (!this->Sigma.Differs(key))
+  {
+    return true;
+  }
+  // Tabulated over the scalar range and read linearly, as the transport's medium table.
+  double range[2];
+  scalars->GetRange(range, 0);
+  const double span = range[1] > range[0] ? range[1] - range[0] : 1.0;
+  std::vector<float> table(kTableSize);
+  for (int i = 0; i < kTableSize; ++i)
+  {
+    const double alpha = opacity->GetValue(range[0] + span * i / (kTableSize - 1.0));
+    table[i] = static_cast<float>(occlusion * scatterer::extinctionFromOpacity(alpha, unit));
+  }
+  int extent[6], dims[3];
+  piece->GetExtent(extent);
+  piece->GetDimensions(dims);
+  this->Grid.origin = glm::ivec3(extent[0], extent[2], extent[4]);
+  this->Grid.dims = glm::ivec3(dims[0], dims[1], dims[2]);
+  const vtkIdType n = scalars->GetNumberOfTuples();
+  this->Grid.sigma.resize(static_cast<size_t>(n));
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const double x = (scalars->GetComponent(i, 0) - range[0]) / span * (kTableSize - 1.0);
+    const double c = std::min(std::max(x, 0.0), kTableSize - 1.0);
+    const int i0 = std::min(static_cast<int>(c), kTableSize - 2);
+    const double f = c - i0;
+    this->Grid.sigma[static_cast<size_t>(i)] =
+      static_cast<float>(table[i0] * (1.0 - f) + table[i0 + 1] * f);
+  }
+  this->Sigma.Record(key);
+  return true;
+}
+
+vtkScattererLightExchange::vtkScattererLightExchange()
+  : Internals(new vtkInternals)
+{
+}
+
+vtkScattererLightExchange::~vtkScattererLightExchange()
+{
+  this->SetController(nullptr);
+}
+
+void vtkScattererLightExchange::Exchange(vtkRenderer* renderer, vtkVolume* volume,
+  vtkScattererTemplateVolumeMapper* mapper, vtkImageData* piece, const int owned[6],
+  const int whole[6])
+{
+  vtkMultiProcessController* controller = this->Controller;
+  const int ranks = controller ? controller->GetNumberOfProcesses() : 1;
+  // Everything that decides whether to take part is the same on every rank (the
+  // settings and the scene), so every rank returns here, or none does.
+  if (ranks < 2 || !this->Enabled || !renderer || !volume || !mapper ||
+    !mapper->GetIlluminationEnabled() ||
+    mapper->GetIlluminationMode() != vtkScattererTemplateVolumeMapper::TRANSPORT)
+  {
+    this->Current = Result();
+    this->Internals->Inputs.Clear();
+    return;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  // The lights of this frame, as the mapper will collect them (headlights and camera
+  // lights follow the camera, which is set by now).
+  renderer->UpdateLightsGeometryToFollowCamera();
+  const scatterer_scene::LightSet set = scatterer_scene::CollectLights(renderer, volume->GetProperty());
+  std::vector<vtkScattererTransportVolume::Light> lights(static_cast<size_t>(set.Count()));
+  for (int l = 0; l < set.Count(); ++l)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      lights[l].Toward[c] = set.Direction[3 * l + c];
+      lights[l].Position[c] = set.Position[3 * l + c];
+    }
+    lights[l].Positional = set.Positional[l] != 0;
+  }
+  const float occlusion =
+    mapper->GetShadowsEnabled() ? static_cast<float>(mapper->GetOcclusionStrength()) : 0.0f;
+  std::string gridKey;
+  const bool hasPiece = piece && piece->GetNumberOfPoints() > 0 &&
+    this->Internals->UpdateGrid(piece, volume, mapper, occlusion, gridKey);
+  const IndexFrame frame = hasPiece ? FrameOf(piece, volume) : IndexFrame();
+  const double texel = std::max(1, mapper->GetTransportScale());
+
+  // 1. Did anything change on any rank?
+  scatterer_render::KeyWriter key;
+  key << hasPiece << '|' << gridKey << '|' << texel;
+  for (int a = 0; a < 6; ++a)
+  {
+    key << ',' << owned[a] << ',' << whole[a];
+  }
+  for (const auto& l : lights)
+  {
+    key << '|' << l.Positional << ',' << l.Toward[0] << ',' << l.Toward[1] << ',' << l.Toward[2]
+        << ',' << l.Position[0] << ',' << l.Position[1] << ',' << l.Position[2];
+  }
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      key << ',' << frame.A[c][r];
+    }
+    key << ',' << frame.b[r];
+  }
+  const int changed = this->Internals->Inputs.Differs(key.Key()) ? 1 : 0;
+  std::vector<int> changes(static_cast<size_t>(ranks), 0);
+  controller->AllGather(&changed, changes.data(), 1);
+  if (std::find(changes.begin(), changes.end(), 1) == changes.end())
+  {
+    this->LastExchangeMilliseconds = 0.0;
+    this->LastExchangeBytes = 0.0;
+    return;
+  }
+  this->Internals->Inputs.Record(key.Key());
+
+  // 2. The maps of this piece: the same lines on every rank.
+  const ls::Box wholeBox = BoxOf(whole);
+  std::vector<ls::Map> maps;
+  size_t floats = 0;
+  // Ranks without a piece do not know the frame; the ranks that do agree on it (one
+  // image), and a rank without a piece sends zeros of the size the header says.
+  if (hasPiece && frame.Valid)
+  {
+    for (const auto& l : lights)
+    {
+      maps.push_back(MapOf(l, frame, wholeBox, texel));
+      floats += static_cast<size_t>(maps.back().size) * maps.back().size;
+    }
+  }
+  const ls::Box ownedBox = hasPiece ? BoxOf(owned) : ls::Box();
+  double header[kHeader] = { hasPiece && frame.Valid ? 1.0 : 0.0, ownedBox.lo.x, ownedBox.lo.y,
+    ownedBox.lo.z, ownedBox.hi.x, ownedBox.hi.y, ownedBox.hi.z, static_cast<double>(lights.size()),
+    static_cast<double>(floats) };
+  std::vector<double> headers(static_cast<size_t>(kHeader) * ranks);
+  controller->AllGather(header, headers.data(), kHeader);
+  // Every rank sees every header, so all decide alike: the ranks with a piece must
+  // agree on the lights and the map sizes.
+  double agreed = -1.0;
+  bool consistent = true;
+  std::vector<ls::Box> boxes(static_cast<size_t>(ranks));
+  for (int r = 0; r < ranks; ++r)
+  {
+    const double* h = headers.data() + static_cast<size_t>(kHeader) * r;
+    if (h[0] == 0.0)
+    {
+      continue;
+    }
+    boxes[r].lo = glm::dvec3(h[1], h[2], h[3]);
+    boxes[r].hi = glm::dvec3(h[4], h[5], h[6]);
+    consistent = consistent && h[7] == static_cast<double>(lights.size()) &&
+      (agreed < 0.0 || h[8] == agreed);
+    agreed = h[8];
+  }
+  if (!consistent || agreed <= 0.0)
+  {
+    if (!consistent)
+    {
+      vtkWarningMacro(<< "The ranks disagree on the lights or the volume's extent; each piece "
+                         "is lit by its own voxels and ghost layers only.");
+    }
+    this->Current = Result();
+    return;
+  }
+  const size_t total = static_cast<size_t>(agreed);
+  std::vector<float> mine(total, 0.0f);
+  if (header[0] != 0.0)
+  {
+    const glm::dmat3 indexToWorld = frame.A;
+    size_t at = 0;
+    for (const auto& map : maps)
+    {
+      const std::vector<float> d = ls::opticalDepth(map, this->Internals->Grid, ownedBox, indexToWorld, 1.0);
+      std::copy(d.begin(), d.end(), mine.begin() + static_cast<std::ptrdiff_t>(at));
+      at += d.size();
+    }
+  }
+  // 3. Everybody's maps, and the sum of those in front of this piece.
+  std::vector<float> all(total * ranks);
+  controller->AllGather(mine.data(), all.data(), static_cast<vtkIdType>(total));
+  this->LastExchangeBytes = static_cast<double>(total) * (ranks - 1) * sizeof(float);
+  Result result;
+  result.Active = header[0] != 0.0;
+  if (result.Active)
+  {
+    const int self = controller->GetLocalProcessId();
+    int reachExtent[6];
+    piece->GetExtent(reachExtent);
+    const ls::Box reach = BoxOf(reachExtent);
+    size_t at = 0;
+    for (size_t l = 0; l < lights.size(); ++l)
+    {
+      const ls::Map& map = maps[l];
+      std::vector<const float*> depths(static_cast<size_t>(ranks), nullptr);
+      for (int r = 0; r < ranks; ++r)
+      {
+        if (!boxes[r].empty())
+        {
+          depths[r] = all.data() + total * r + at;
+        }
+      }
+      auto entering = std::make_shared<vtkScattererTransportVolume::EnteringDepth>();
+      entering->Positional = map.positional;
+      entering->Size = map.size;
+      entering->Side = static_cast<float>(map.texel * map.size);
+      for (int c = 0; c < 3; ++c)
+      {
+        entering->Light[c] = static_cast<float>(map.light[c]);
+        entering->U[c] = static_cast<float>(map.u[c]);
+        entering->V[c] = static_cast<float>(map.v[c]);
+      }
+      entering->Lo[0] = static_cast<float>(map.lo.x);
+      entering->Lo[1] = static_cast<float>(map.lo.y);
+      entering->Depth = ls::enteringDepth(map, boxes, self, reach, depths);
+      lights[l].Entering = entering;
+      at += static_cast<size_t>(map.size) * map.size;
+    }
+    for (int a = 0; a < 3; ++a)
+    {
+      result.OwnedLo[a] = static_cast<float>(owned[2 * a]);
+      result.OwnedHi[a] = static_cast<float>(owned[2 * a + 1]);
+    }
+    result.Lights = lights;
+  }
+  this->Current = result;
+  ++this->ExchangeCount;
+  this->LastExchangeMilliseconds =
+    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+void vtkScattererLightExchange::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Controller: " << this->Controller << "\n";
+  os << indent << "Enabled: " << (this->Enabled ? "On" : "Off") << "\n";
+  os << indent << "Active: " << (this->Current.Active ? "yes" : "no") << "\n";
+  os << indent << "ExchangeCount: " << this->ExchangeCount << "\n";
+  os << indent << "LastExchangeMilliseconds: " << this->LastExchangeMilliseconds << "\n";
+  os << indent << "LastExchangeBytes: " << this->LastExchangeBytes << "\n";
+}

@@ -1,0 +1,117 @@
+/**
+ * @class   vtkScattererLightExchange
+ * @brief   Carries each light between the pieces of a distributed volume, so that a
+ *          piece is shaded by the matter of every piece between it and the light.
+ *
+ * With MPI (ParaView's pvbatch or pvserver), each rank renders its piece of the
+ * volume plus ghost layers. The ghost layers hold what is local to a sample (the
+ * template in-scattering, interpolation); they cannot hold the shadow of matter
+ * farther away. This class makes the light exact across pieces:
+ *
+ * 1. Each rank computes, per light, the optical depth of its own voxels along every
+ *    line of the light (a light-space map; scatterer/LightSpace.h): orthographic for a
+ *    directional light, octahedral around a positional one.
+ * 2. The ranks exchange the maps (one AllGather through the controller ParaView
+ *    already uses).
+ * 3. Each rank adds the maps of the pieces in front of it along each line, and the
+ *    mapper's transport sweep multiplies its piece's own transmittance by
+ *    exp(-that depth), while only the piece's own voxels attenuate in its sweep (the
+ *    ghost layers are other pieces' matter, already in their maps).
+ *
+ * Exchange() is collective: every rank calls it once per frame before the volume
+ * renders (vtkScattererVolumeRepresentation does, from its renderer's StartEvent,
+ * which ParaView raises on every rank). It exchanges only when something it depends
+ * on changed on some rank (a one-int AllGather says so), so a still scene costs one
+ * small message per frame.
+ *
+ * Cost per light change: each rank receives (ranks - 1) x size^2 x 4 bytes per light
+ * (size: the map's side in texels; docs/paraview.md) and marches size^2 lines
+ * through its own piece on the CPU.
+ *
+ * @sa vtkScattererTemplateVolumeMapper::SetLightExchange, scatterer/LightSpace.h
+ */
+#ifndef vtkScattererLightExchange_h
+#define vtkScattererLightExchange_h
+
+#include "ScattererTemplateModule.h" // for export macro
+#include "vtkObject.h"
+#include "vtkScattererTransportVolume.h" // for EnteringDepth
+
+#include <memory>  // for Internals
+#include <vector>  // for the maps
+
+class vtkImageData;
+class vtkMultiProcessController;
+class vtkRenderer;
+class vtkScattererTemplateVolumeMapper;
+class vtkVolume;
+
+class SCATTERERTEMPLATE_EXPORT vtkScattererLightExchange : public vtkObject
+{
+public:
+  static vtkScattererLightExchange* New();
+  vtkTypeMacro(vtkScattererLightExchange, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /** The ranks: ParaView's global controller. With fewer than 2 processes nothing is exchanged. */
+  virtual void SetController(vtkMultiProcessController* controller);
+  vtkGetObjectMacro(Controller, vtkMultiProcessController);
+  ///@}
+
+  ///@{
+  /**
+   * On (default): the light that enters a piece has crossed the pieces in front of
+   * it. Off: each piece is lit as if only its own voxels and ghost layers stood in the
+   * light's way (the control of the tests). Must be the same on every rank.
+   */
+  vtkSetMacro(Enabled, bool);
+  vtkGetMacro(Enabled, bool);
+  vtkBooleanMacro(Enabled, bool);
+  ///@}
+
+  /**
+   * Collective: call on every rank, once per frame, before the volume renders.
+   * @p piece is the image @p mapper renders on this rank (its voxels and ghost
+   * layers; null if the rank holds none), @p owned the structured extent of the
+   * voxels it owns, @p whole the whole volume's extent.
+   */
+  void Exchange(vtkRenderer* renderer, vtkVolume* volume, vtkScattererTemplateVolumeMapper* mapper,
+    vtkImageData* piece, const int owned[6], const int whole[6]);
+
+  /** What the mapper reads: the lights it was made for, and per light its map. */
+  struct Result
+  {
+    bool Active = false; ///< false: light enters every piece unattenuated
+    std::vector<vtkScattererTransportVolume::Light> Lights; ///< geometry only, world
+    float OwnedLo[3] = { 0, 0, 0 }, OwnedHi[3] = { 0, 0, 0 }; ///< structured indices
+  };
+  const Result& GetResult() const { return this->Current; }
+
+  /** Milliseconds the last exchange took on this rank (maps, messages, sums). */
+  vtkGetMacro(LastExchangeMilliseconds, double);
+  /** Bytes this rank received in the last exchange. */
+  vtkGetMacro(LastExchangeBytes, double);
+  /** Exchanges so far (frames that found something changed). */
+  vtkGetMacro(ExchangeCount, int);
+
+protected:
+  vtkScattererLightExchange();
+  ~vtkScattererLightExchange() override;
+
+  vtkMultiProcessController* Controller = nullptr;
+  bool Enabled = true;
+  double LastExchangeMilliseconds = 0.0;
+  double LastExchangeBytes = 0.0;
+  int ExchangeCount = 0;
+
+private:
+  vtkScattererLightExchange(const vtkScattererLightExchange&) = delete;
+  void operator=(const vtkScattererLightExchange&) = delete;
+
+  Result Current;
+  struct vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+};
+
+#endif
