@@ -37,6 +37,8 @@ namespace
 constexpr int kTableSize = 4096;
 // The largest map side: 1024^2 x 4 bytes per light and rank.
 constexpr int kMaxMapSize = 1024;
+// Steps along a line, in voxels (the data's own resolution).
+constexpr double kStep = 1.0;
 // Per rank in the header AllGather: holds a piece, owned box (6), lights, floats.
 constexpr int kHeader = 9;
 
@@ -55,7 +57,8 @@ IndexFrame FrameOf(vtkImageData* image, vtkVolume* volume)
   image->ComputeIndexToPhysicalMatrix(image->GetOrigin(), image->GetSpacing(),
     image->GetDirectionMatrix()->GetData(), indexToPhysical);
   vtkNew<vtkMatrix4x4> indexToWorld;
-  vtkMatrix4x4::Multiply4x4(volume->GetMatrix()->GetData(), indexToPhysical, indexToWorld->GetData());
+  vtkMatrix4x4::Multiply4x4(
+    volume->GetMatrix()->GetData(), indexToPhysical, indexToWorld->GetData());
   for (int r = 0; r < 3; ++r)
   {
     for (int c = 0; c < 3; ++c)
@@ -123,8 +126,8 @@ bool vtkScattererLightExchange::vtkInternals::UpdateGrid(vtkImageData* piece, vt
     ? property->GetScalarOpacityUnitDistance(0)
     : 1.0;
   scatterer_render::KeyWriter k;
-  k << piece->GetMTime() << '|' << scalars->GetMTime() << '|' << opacity->GetMTime() << '|'
-    << unit << '|' << occlusion;
+  k << piece->GetMTime() << '|' << scalars->GetMTime() << '|' << opacity->GetMTime() << '|' << unit
+    << '|' << occlusion;
   key = k.Key();
   if (!this->Sigma.Differs(key))
   {
@@ -190,7 +193,8 @@ void vtkScattererLightExchange::Exchange(vtkRenderer* renderer, vtkVolume* volum
   // The lights of this frame, as the mapper will collect them (headlights and camera
   // lights follow the camera, which is set by now).
   renderer->UpdateLightsGeometryToFollowCamera();
-  const scatterer_scene::LightSet set = scatterer_scene::CollectLights(renderer, volume->GetProperty());
+  const scatterer_scene::LightSet set =
+    scatterer_scene::CollectLights(renderer, volume->GetProperty());
   std::vector<vtkScattererTransportVolume::Light> lights(static_cast<size_t>(set.Count()));
   for (int l = 0; l < set.Count(); ++l)
   {
@@ -274,8 +278,8 @@ void vtkScattererLightExchange::Exchange(vtkRenderer* renderer, vtkVolume* volum
     }
     boxes[r].lo = glm::dvec3(h[1], h[2], h[3]);
     boxes[r].hi = glm::dvec3(h[4], h[5], h[6]);
-    consistent = consistent && h[7] == static_cast<double>(lights.size()) &&
-      (agreed < 0.0 || h[8] == agreed);
+    consistent =
+      consistent && h[7] == static_cast<double>(lights.size()) && (agreed < 0.0 || h[8] == agreed);
     agreed = h[8];
   }
   if (!consistent || agreed <= 0.0)
@@ -296,7 +300,8 @@ void vtkScattererLightExchange::Exchange(vtkRenderer* renderer, vtkVolume* volum
     size_t at = 0;
     for (const auto& map : maps)
     {
-      const std::vector<float> d = ls::opticalDepth(map, this->Internals->Grid, ownedBox, indexToWorld, 1.0);
+      const std::vector<float> d =
+        ls::opticalDepth(map, this->Internals->Grid, ownedBox, indexToWorld, kStep);
       std::copy(d.begin(), d.end(), mine.begin() + static_cast<std::ptrdiff_t>(at));
       at += d.size();
     }
@@ -337,14 +342,10 @@ void vtkScattererLightExchange::Exchange(vtkRenderer* renderer, vtkVolume* volum
       }
       entering->Lo[0] = static_cast<float>(map.lo.x);
       entering->Lo[1] = static_cast<float>(map.lo.y);
-      entering->Depth = ls::enteringDepth(map, boxes, self, reach, depths);
+      entering->Depth =
+        ls::enteringDepth(map, boxes, self, reach, depths, this->Internals->Grid, frame.A, kStep);
       lights[l].Entering = entering;
       at += static_cast<size_t>(map.size) * map.size;
-    }
-    for (int a = 0; a < 3; ++a)
-    {
-      result.OwnedLo[a] = static_cast<float>(owned[2 * a]);
-      result.OwnedHi[a] = static_cast<float>(owned[2 * a + 1]);
     }
     result.Lights = lights;
   }

@@ -13,10 +13,10 @@
  *    directional light, octahedral around a positional one.
  * 2. The ranks exchange the maps (one AllGather through the controller ParaView
  *    already uses).
- * 3. Each rank adds the maps of the pieces in front of it along each line, and the
- *    mapper's transport sweep multiplies its piece's own transmittance by
- *    exp(-that depth), while only the piece's own voxels attenuate in its sweep (the
- *    ghost layers are other pieces' matter, already in their maps).
+ * 3. Each rank adds the maps of the pieces in front of it along each line, less
+ *    their part inside its ghost layers (it has those voxels, and its own sweep
+ *    crosses them), and the mapper's transport sweep multiplies the transmittance
+ *    through the piece and its ghosts by exp(-that depth).
  *
  * Exchange() is collective: every rank calls it once per frame before the volume
  * renders (vtkScattererVolumeRepresentation does, from its renderer's StartEvent,
@@ -26,7 +26,7 @@
  *
  * Cost per light change: each rank receives (ranks - 1) x size^2 x 4 bytes per light
  * (size: the map's side in texels; docs/paraview.md) and marches size^2 lines
- * through its own piece on the CPU.
+ * through its own piece and its ghost layers on the CPU.
  *
  * @sa vtkScattererTemplateVolumeMapper::SetLightExchange, scatterer/LightSpace.h
  */
@@ -37,8 +37,8 @@
 #include "vtkObject.h"
 #include "vtkScattererTransportVolume.h" // for EnteringDepth
 
-#include <memory>  // for Internals
-#include <vector>  // for the maps
+#include <memory> // for Internals
+#include <vector> // for the maps
 
 class vtkImageData;
 class vtkMultiProcessController;
@@ -84,7 +84,6 @@ public:
   {
     bool Active = false; ///< false: light enters every piece unattenuated
     std::vector<vtkScattererTransportVolume::Light> Lights; ///< geometry only, world
-    float OwnedLo[3] = { 0, 0, 0 }, OwnedHi[3] = { 0, 0, 0 }; ///< structured indices
   };
   const Result& GetResult() const { return this->Current; }
 

@@ -268,7 +268,6 @@ void TransportUpdate::UpdateLights(
   }
   // A piece of a distributed volume: the maps are for the lights the exchange saw
   // before this frame rendered; they must be this frame's.
-  this->Inputs.OwnedOnly = false;
   const vtkScattererLightExchange::Result* exchange = source.Exchange;
   if (!exchange || !exchange->Active)
   {
@@ -294,12 +293,6 @@ void TransportUpdate::UpdateLights(
   for (size_t l = 0; l < out.size(); ++l)
   {
     out[l].Entering = exchange->Lights[l].Entering;
-  }
-  this->Inputs.OwnedOnly = true;
-  for (int a = 0; a < 3; ++a)
-  {
-    this->Inputs.OwnedLo[a] = exchange->OwnedLo[a];
-    this->Inputs.OwnedHi[a] = exchange->OwnedHi[a];
   }
 }
 

@@ -75,7 +75,10 @@ public:
   vtkScattererTransportVolume* GetVolume() const { return this->Transport; }
 
   /** True when the last update lit a piece with the light exchange's maps. */
-  bool UsesLightExchange() const { return this->Inputs.OwnedOnly; }
+  bool UsesLightExchange() const
+  {
+    return !this->Inputs.Lights.empty() && this->Inputs.Lights.front().Entering;
+  }
 
   void ReleaseGraphicsResources(vtkWindow* window);
 

@@ -222,9 +222,8 @@ public:
   /**
    * A piece of a distributed volume: the exchange that carries each light in from the
    * other pieces (vtkScattererLightExchange; the ParaView plugin sets it). Its maps are
-   * used when they were made for this frame's lights, and then only the piece's own
-   * voxels attenuate light in its sweep. Otherwise the piece is lit through its own
-   * voxels and ghost layers only. Default: none.
+   * used when they were made for this frame's lights; otherwise the piece is lit
+   * through its own voxels and ghost layers only. Default: none.
    */
   void SetLightExchange(vtkScattererLightExchange* exchange);
   vtkScattererLightExchange* GetLightExchange() const;

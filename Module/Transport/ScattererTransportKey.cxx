@@ -65,9 +65,6 @@ std::uint64_t TransportKey(const vtkScattererTransportVolume::Inputs& in)
   f.Add(in.TexToWorld, 16);
   f.Add(in.TexToDataset, 16);
   f.Add(in.TexToIndex, 16);
-  f.Add(in.OwnedOnly);
-  f.Add(in.OwnedLo, 3);
-  f.Add(in.OwnedHi, 3);
   f.Add(in.ClipPlanes);
   for (const auto& l : in.Lights)
   {

@@ -157,9 +157,6 @@ void SetIndexUniforms(vtkShaderProgram* program, const vtkScattererTransportVolu
   texToIndex->DeepCopy(in.TexToIndex);
   texToIndex->Transpose(); // as in SetCommonUniforms
   program->SetUniformMatrix("st_texToIndex", texToIndex);
-  program->SetUniformi("st_ownedOnly", in.OwnedOnly ? 1 : 0);
-  program->SetUniform3f("st_ownedLo", in.OwnedLo);
-  program->SetUniform3f("st_ownedHi", in.OwnedHi);
 }
 
 ScopedSampler::ScopedSampler(

@@ -52,7 +52,7 @@ void SetCommonUniforms(vtkShaderProgram* program, const TransportGrid& grid,
 /** st_toSweep: grid order -> @p plan's sweep order (rows, columns, slices). */
 void SetSweepOrder(vtkShaderProgram* program, const SweepPlan& plan);
 
-/** The sweep's structured-index uniforms: texture -> index, and the owned box of a piece. */
+/** The sweep's texture -> structured index matrix (where it reads the depth in front). */
 void SetIndexUniforms(vtkShaderProgram* program, const vtkScattererTransportVolume::Inputs& in);
 
 /** Binds a texture to a sampler of a program for this object's lifetime. */

@@ -13,9 +13,9 @@
 // Positional lights: the direction toward the light per texel, and slices are
 // swept away from the light's own slice on both sides (the radial variant).
 //
-// A piece of a distributed volume (vtkScattererLightExchange): only the piece's own
-// matter attenuates here (st_ownedOnly), and the light that enters the piece has
-// already crossed the pieces in front of it, whose optical depth tau_front the
+// A piece of a distributed volume (vtkScattererLightExchange): the light that enters
+// what the piece holds (its voxels and ghost layers) has already crossed the pieces
+// in front of it, whose optical depth beyond the ghost layers, tau_front, the
 // light-space map st_enteringDepth holds (scatterer/LightSpace.h). By Beer-Lambert
 // over the parts of the path,
 //   T(p) = T_piece(p) * exp(-tau_front(line through p))
@@ -34,9 +34,6 @@ uniform vec3 st_lightPosition;     // positional: world position
 uniform int st_lightPositional;
 uniform int st_substeps;           // extinction samples per step (volume voxels per texel)
 uniform mat4 st_texToIndex;        // volume texture coordinates -> structured index
-uniform int st_ownedOnly;          // 1: only matter inside [st_ownedLo, st_ownedHi] attenuates
-uniform vec3 st_ownedLo;
-uniform vec3 st_ownedHi;
 uniform int st_entering;           // 0: none; 1: directional map; 2: positional (octahedral)
 uniform sampler2D st_enteringDepth;
 uniform vec3 st_enteringLight;     // positional: the light (index space)
@@ -77,17 +74,6 @@ float st_depthInFront(vec3 i)
   return texture(st_enteringDepth, c).r;
 }
 
-// Does the matter at texture position t attenuate in this sweep?
-bool st_attenuates(vec3 t)
-{
-  if (st_ownedOnly == 0)
-  {
-    return true;
-  }
-  vec3 i = (st_texToIndex * vec4(t, 1.0)).xyz;
-  return all(greaterThanEqual(i, st_ownedLo)) && all(lessThanEqual(i, st_ownedHi));
-}
-
 void main()
 {
   vec3 js = vec3(floor(texCoord * st_sweepDims.xy), st_slice);
@@ -113,8 +99,8 @@ void main()
     float tau = 0.0;
     for (int i = 0; i < st_substeps; ++i)
     {
-      vec3 g = st_gridToTexture(j + stepGrid * ((float(i) + 0.5) / float(st_substeps)));
-      tau += st_attenuates(g) ? st_attenuationAt(g) : 0.0;
+      vec3 g = j + stepGrid * ((float(i) + 0.5) / float(st_substeps));
+      tau += st_attenuationAt(st_gridToTexture(g));
     }
     tau *= len / float(st_substeps);
     // Outside the grid the light has crossed no matter: the border reads 1.

@@ -50,9 +50,10 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /**
-   * A piece of a distributed volume: the optical depth between a light and this piece
-   * that the other pieces hold, as a light-space map (scatterer/LightSpace.h, filled
-   * by vtkScattererLightExchange) over the whole volume's structured indices.
+   * A piece of a distributed volume: the optical depth between a light and everything
+   * this piece holds (its voxels and ghost layers) that the other pieces hold, as a
+   * light-space map (scatterer/LightSpace.h, filled by vtkScattererLightExchange) over
+   * the whole volume's structured indices.
    */
   struct EnteringDepth
   {
@@ -102,12 +103,6 @@ public:
     double TexToWorld[16] = {};   ///< volume texture coordinates -> world (row-major)
     double TexToDataset[16] = {}; ///< volume texture coordinates -> dataset (row-major)
     double TexToIndex[16] = {};   ///< volume texture coordinates -> structured index (row-major)
-    /// A piece of a distributed volume: only the matter inside this box (structured
-    /// indices: the piece's own voxels) attenuates light in the sweep. The rest, its
-    /// ghost layers, belongs to other pieces, whose optical depth Light::Entering holds.
-    /// The ghost layers still scatter light.
-    bool OwnedOnly = false;
-    float OwnedLo[3] = { 0, 0, 0 }, OwnedHi[3] = { 0, 0, 0 };
     /// Over the normalised scalar [0, 1], 4 per entry: albedo rgb (the colour transfer
     /// function) and sigma_t per world unit (the opacity transfer function); MediumRows
     /// rows of equal length (a label-map mask: one per label value, 0..255).

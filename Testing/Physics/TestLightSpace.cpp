@@ -127,8 +127,8 @@ TEST(LightSpace, ThePieceNearerTheLightIsInFront)
     const std::vector<const float*> depths = { d[0].data(), d[1].data() };
     const glm::dvec2 c = m.coordinate(p) * static_cast<double>(m.size);
     const size_t texel = at(m, static_cast<int>(c.x), static_cast<int>(c.y));
-    const std::vector<float> e0 = ls::enteringDepth(m, owned, 0, owned[0], depths);
-    const std::vector<float> e1 = ls::enteringDepth(m, owned, 1, owned[1], depths);
+    const std::vector<float> e0 = ls::enteringDepth(m, owned, 0, owned[0], depths, g, unit, 0.5);
+    const std::vector<float> e1 = ls::enteringDepth(m, owned, 1, owned[1], depths, g, unit, 0.5);
     // Light from +x: piece 1 (x 5..15, depth 0.5 * 10) shades piece 0, not the reverse.
     EXPECT_NEAR(e0[texel], fromPlusX ? 5.0 : 0.0, 1e-4);
     EXPECT_NEAR(e1[texel], fromPlusX ? 0.0 : 2.5, 1e-4);
@@ -143,8 +143,12 @@ TEST(LightSpace, ThePieceNearerTheLightIsInFront)
   const std::vector<const float*> depths = { d[0].data(), d[1].data() };
   const glm::dvec2 c = m.coordinate(p) * static_cast<double>(m.size);
   const size_t texel = at(m, static_cast<int>(c.x), static_cast<int>(c.y));
-  EXPECT_NEAR(ls::enteringDepth(m, owned, 0, owned[0], depths)[texel], 0.5 * 4.0, 0.05);
-  EXPECT_NEAR(ls::enteringDepth(m, owned, 1, owned[1], depths)[texel], 0.0, 1e-6);
+  EXPECT_NEAR(
+    ls::enteringDepth(m, owned, 0, owned[0], depths, g, unit, 0.25)[texel], 0.5 * 4.0, 0.05);
+  EXPECT_NEAR(ls::enteringDepth(m, owned, 1, owned[1], depths, g, unit, 0.25)[texel], 0.0, 1e-6);
+  // With 2 ghost layers, piece 0 crosses x 5..7 itself: 2 less in front.
+  EXPECT_NEAR(ls::enteringDepth(m, owned, 0, box(0, 7, 0, 15, 0, 15), depths, g, unit, 0.25)[texel],
+    0.5 * 2.0, 0.05);
 }
 
 TEST(LightSpace, FourPiecesAddUpToTheWholeVolume)
@@ -170,9 +174,15 @@ TEST(LightSpace, FourPiecesAddUpToTheWholeVolume)
     for (const auto& v : d) {
       depths.push_back(v.data());
     }
-    std::vector<std::vector<float>> entering;
+    std::vector<ls::Box> reach;
+    std::vector<std::vector<float>> entering, local;
     for (int k = 0; k < 4; ++k) {
-      entering.push_back(ls::enteringDepth(m, owned, k, owned[k], depths));
+      ls::Box r = owned[k];
+      r.lo = glm::max(r.lo - glm::dvec3(3.0), whole.lo);
+      r.hi = glm::min(r.hi + glm::dvec3(3.0), whole.hi);
+      reach.push_back(r);
+      entering.push_back(ls::enteringDepth(m, owned, k, r, depths, g, indexToWorld, 0.25));
+      local.push_back(ls::opticalDepth(m, g, r, indexToWorld, 0.25));
     }
     int checked = 0;
     for (int j = 0; j < m.size; ++j) {
@@ -191,7 +201,8 @@ TEST(LightSpace, FourPiecesAddUpToTheWholeVolume)
           continue;
         }
         const double total = all[at(m, i, j)];
-        EXPECT_NEAR(entering[last][at(m, i, j)] + d[last][at(m, i, j)], total, 0.02 * total + 1e-3)
+        EXPECT_NEAR(
+          entering[last][at(m, i, j)] + local[last][at(m, i, j)], total, 0.02 * total + 1e-3)
           << i << "," << j;
         ++checked;
       }

@@ -173,6 +173,36 @@ double ExtinctionGrid::at(const glm::dvec3& p) const
   return result;
 }
 
+namespace {
+// Optical depth of `grid` over [t0, t1] of `line` (midpoint rule, steps <= step).
+double depthBetween(const Line& line, double t0, double t1, const ExtinctionGrid& grid,
+  const glm::dmat3& indexToWorld, double step)
+{
+  const int n = std::max(1, static_cast<int>(std::ceil((t1 - t0) / step)));
+  const double dt = (t1 - t0) / n;
+  double sum = 0.0;
+  for (int m = 0; m < n; ++m) {
+    sum += grid.at(line.origin + line.direction * (t0 + (m + 0.5) * dt));
+  }
+  return sum * dt * glm::length(indexToWorld * line.direction);
+}
+
+// Runs rows(first, last) over the map's rows [0, size) on the hardware's threads.
+template <typename Rows> void forRows(int size, const Rows& rows)
+{
+  const int threads =
+    std::max(1, std::min<int>(static_cast<int>(std::thread::hardware_concurrency()), size));
+  std::vector<std::thread> workers;
+  for (int t = 1; t < threads; ++t) {
+    workers.emplace_back(rows, size * t / threads, size * (t + 1) / threads);
+  }
+  rows(0, size / threads);
+  for (auto& w : workers) {
+    w.join();
+  }
+}
+} // namespace
+
 std::vector<float> opticalDepth(const Map& map, const ExtinctionGrid& grid, const Box& owned,
   const glm::dmat3& indexToWorld, double step)
 {
@@ -217,32 +247,49 @@ std::vector<float> opticalDepth(const Map& map, const ExtinctionGrid& grid, cons
 }
 
 std::vector<float> enteringDepth(const Map& map, const std::vector<Box>& owned, int self,
-  const Box& selfReach, const std::vector<const float*>& depths)
+  const Box& selfReach, const std::vector<const float*>& depths, const ExtinctionGrid& grid,
+  const glm::dmat3& indexToWorld, double step)
 {
-  std::vector<float> entering(static_cast<size_t>(map.size) * map.size, 0.0f);
-  for (int j = 0; j < map.size; ++j) {
-    for (int i = 0; i < map.size; ++i) {
-      const Line l = map.line(i, j);
-      double t0, t1;
-      if (!clip(l, owned[self], t0, t1) && !clip(l, selfReach, t0, t1)) {
-        continue;
-      }
-      const double here = 0.5 * (t0 + t1);
-      const size_t texel = static_cast<size_t>(j) * map.size + i;
-      double sum = 0.0;
-      for (size_t k = 0; k < owned.size(); ++k) {
-        double s0, s1;
-        if (static_cast<int>(k) == self || !depths[k] || !clip(l, owned[k], s0, s1)) {
-          continue;
-        }
-        // Disjoint boxes: the one whose part of the line comes first is in front.
-        if (0.5 * (s0 + s1) < here) {
-          sum += depths[k][texel];
-        }
-      }
-      entering[texel] = static_cast<float>(sum);
-    }
+  if (!(step > 0.0)) {
+    throw std::invalid_argument("lightspace::enteringDepth: the step must be > 0");
   }
+  std::vector<float> entering(static_cast<size_t>(map.size) * map.size, 0.0f);
+  forRows(map.size, [&](int first, int last) {
+    for (int j = first; j < last; ++j) {
+      for (int i = 0; i < map.size; ++i) {
+        const Line l = map.line(i, j);
+        double t0, t1, r0, r1;
+        const bool inReach = clip(l, selfReach, r0, r1);
+        if (!clip(l, owned[self], t0, t1)) {
+          if (!inReach) {
+            continue;
+          }
+          t0 = r0;
+          t1 = r1;
+        }
+        const double here = 0.5 * (t0 + t1);
+        const size_t texel = static_cast<size_t>(j) * map.size + i;
+        double sum = 0.0;
+        for (size_t k = 0; k < owned.size(); ++k) {
+          double s0, s1;
+          if (static_cast<int>(k) == self || !depths[k] || !clip(l, owned[k], s0, s1)) {
+            continue;
+          }
+          // Disjoint boxes: the one whose part of the line comes first is in front.
+          if (0.5 * (s0 + s1) >= here) {
+            continue;
+          }
+          sum += depths[k][texel];
+          // Its part inside the reach: this piece's sweep crosses that itself.
+          const double a = std::max(s0, r0), b = std::min(s1, r1);
+          if (inReach && a < b) {
+            sum -= depthBetween(l, a, b, grid, indexToWorld, step);
+          }
+        }
+        entering[texel] = static_cast<float>(std::max(sum, 0.0));
+      }
+    }
+  });
   return entering;
 }
 

@@ -103,7 +103,7 @@ public:
    * This rank's light exchange: exchanges so far, milliseconds and bytes received of
    * the last one, and 1 if the last frame's transport used its maps.
    */
-  double* GetLightExchangeInfo();
+  double* GetLightExchangeInfo() VTK_SIZEHINT(4);
 
   /** Ghost layers the last update asked for (0 when the data is not split). */
   vtkGetMacro(RequestedGhostLevels, int);

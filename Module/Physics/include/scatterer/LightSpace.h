@@ -15,7 +15,10 @@
 // Each piece computes tau_j on every line of the map (opticalDepth), the pieces
 // exchange their maps, and each adds the maps of the pieces in front of it
 // (enteringDepth). Pieces are disjoint boxes, so along one line they are ordered by
-// where the line crosses them.
+// where the line crosses them. A piece also holds ghost layers (copies of its
+// neighbours' voxels) and sweeps through them itself; the part of the pieces in front
+// that lies in its ghost layers is taken off their sum, so nothing counts twice and
+// the ghost layers get the light they would get in the whole volume too.
 //
 // Coordinates: continuous structured indices (i, j, k) of the whole volume, the
 // frame every piece of one image shares; world lengths come from indexToWorld.
@@ -99,13 +102,19 @@ struct ExtinctionGrid {
 std::vector<float> opticalDepth(const Map& map, const ExtinctionGrid& grid, const Box& owned,
   const glm::dmat3& indexToWorld, double step);
 
-// The optical depth in front of piece `self` on every line: the sum of depths[j]
-// over the pieces j whose part of the line lies before self's (nearer the light).
-// Where the line misses self's owned box, `selfReach` (the box of everything the
-// piece holds, ghost layers included) says where self is on it; lines missing both
-// get 0. depths[j] may be null for a piece that holds nothing.
+// The optical depth in front of piece `self`'s reach on every line: what the light
+// crosses before it enters the box `selfReach` (everything the piece holds: its own
+// voxels and its ghost layers). The piece's own sweep covers the reach, so
+//   entering = sum over the pieces j in front of self (whose part of the line lies
+//              before self's, nearer the light) of depths[j]
+//            - the depth of their matter inside selfReach (from `grid`, the piece's
+//              own copy of its ghost layers),
+// clamped at 0. Where the line misses self's owned box, the reach says where self is
+// on it; lines missing both get 0. depths[j] may be null for a piece that holds
+// nothing. grid, indexToWorld and step as for opticalDepth.
 std::vector<float> enteringDepth(const Map& map, const std::vector<Box>& owned, int self,
-  const Box& selfReach, const std::vector<const float*>& depths);
+  const Box& selfReach, const std::vector<const float*>& depths, const ExtinctionGrid& grid,
+  const glm::dmat3& indexToWorld, double step);
 
 } // namespace lightspace
 } // namespace scatterer
