@@ -4,15 +4,19 @@
   bash scripts/paraview-env.sh [mpirun -np N] pvbatch Examples/paraview/render_ct_head_pvbatch.py --out ct-head.png
 
 With N ranks the volume is split into N pieces, each with ghost layers as wide as the
-illumination reach (docs/paraview.md). Prints one JSON line: ranks, the first frame
-(pipeline update, ghost exchange, light transport volume) and the median of the next
-frames in milliseconds, and what rank 0 held: ghost layers, piece size.
+illumination reach, and the ranks exchange the light between the pieces
+(docs/paraview.md). Prints one JSON line: ranks, the first frame (pipeline update,
+ghost exchange, light transport volume) and the median of the next frames in
+milliseconds, and what rank 0 held and did: ghost layers, piece size, the light
+exchange's milliseconds and bytes. With --move-light the scene light moves a little
+every frame, so every frame rebuilds the illumination and exchanges light.
 """
 import argparse
 import json
 import os
 import statistics
 import sys
+import time
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
                                 "ParaView", "Python"))
@@ -31,6 +35,10 @@ parser.add_argument("--template-radius", type=float, default=0.0,
 parser.add_argument("--ghost-layers", type=int, default=-1,
                     help="-1: automatic (the illumination reach); 0: none; n: n layers")
 parser.add_argument("--frames", type=int, default=5)
+parser.add_argument("--move-light", action="store_true",
+                    help="move the scene light every frame (a light change per frame)")
+parser.add_argument("--light-exchange", type=int, default=1, choices=[0, 1],
+                    help="several ranks: exchange the light between the pieces (default 1)")
 args = parser.parse_args()
 
 scene_lib.load_plugin(args.plugin)
@@ -40,7 +48,21 @@ display = scene_lib.show_volume(reader, view, args.representation)
 if args.representation == "Scatterer Volume":
     display.ScattererTemplateRadius = args.template_radius
     display.ScattererGhostLayers = args.ghost_layers
-first, frames = scene_lib.timed_renders(view, args.frames)
+    display.ScattererLightExchange = args.light_exchange
+exchange_ms = []
+if args.move_light:
+    first, _ = scene_lib.timed_renders(view, 0)
+    light = view.AdditionalLights[0]
+    frames = []
+    for i in range(args.frames):
+        light.Position = [c + (2.0 if i % 2 == 0 else -2.0) for c in light.Position]
+        start = time.perf_counter()
+        view.StillRender()
+        frames.append((time.perf_counter() - start) * 1000.0)
+        if args.representation == "Scatterer Volume":
+            exchange_ms.append(scene_lib.rank0_info(display)["ScattererLightExchangeInfo"][1])
+else:
+    first, frames = scene_lib.timed_renders(view, args.frames)
 scene_lib.save(view, args.out, args.size)
 
 result = {"ranks": scene_lib.number_of_ranks(), "representation": args.representation,
@@ -52,6 +74,10 @@ if args.representation == "Scatterer Volume":
     result.update({"ghost_layers": info["ScattererRequestedGhostLayersInfo"][0],
                    "rank0_piece_kib": info["ScattererPieceMemoryKiBInfo"][0],
                    "rank0_owned_bounds": info["ScattererOwnedBoundsInfo"],
-                   "shader": info["ScattererShaderFeaturesInfo"][0]})
+                   "shader": info["ScattererShaderFeaturesInfo"][0],
+                   "light_exchange": args.light_exchange,
+                   "rank0_exchange_bytes": info["ScattererLightExchangeInfo"][2]})
+    if exchange_ms:
+        result["rank0_exchange_ms"] = round(statistics.median(exchange_ms), 1)
 print("SCATTERER_RESULT " + json.dumps(result))
 sys.stdout.flush()

@@ -89,6 +89,16 @@ ls::Map MapOf(const vtkScattererTransportVolume::Light& light, const IndexFrame&
   return ls::directionalMap(toIndex * toward, whole, texel, kMaxMapSize);
 }
 
+// Scalars normalised over [lo, lo + span], as the transport's passes read them.
+template <typename T>
+void Normalise(const T* scalars, vtkIdType n, double lo, double span, float* out)
+{
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    out[i] = static_cast<float>((static_cast<double>(scalars[i]) - lo) / span);
+  }
+}
+
 ls::Box BoxOf(const int extent[6])
 {
   ls::Box b;
@@ -133,32 +143,37 @@ bool vtkScattererLightExchange::vtkInternals::UpdateGrid(vtkImageData* piece, vt
   {
     return true;
   }
-  // Tabulated over the scalar range and read linearly, as the transport's medium table.
+  // Scalars normalised over their range, and sigma_t tabulated over it: the grid
+  // interpolates the scalar and then looks sigma_t up, as the transport's passes do.
   double range[2];
   scalars->GetRange(range, 0);
   const double span = range[1] > range[0] ? range[1] - range[0] : 1.0;
-  std::vector<float> table(kTableSize);
+  ls::ExtinctionGrid& grid = this->Grid;
+  grid.table.resize(kTableSize);
   for (int i = 0; i < kTableSize; ++i)
   {
     const double alpha = opacity->GetValue(range[0] + span * i / (kTableSize - 1.0));
-    table[i] = static_cast<float>(occlusion * scatterer::extinctionFromOpacity(alpha, unit));
+    grid.table[i] = static_cast<float>(occlusion * scatterer::extinctionFromOpacity(alpha, unit));
   }
   int extent[6], dims[3];
   piece->GetExtent(extent);
   piece->GetDimensions(dims);
-  this->Grid.origin = glm::ivec3(extent[0], extent[2], extent[4]);
-  this->Grid.dims = glm::ivec3(dims[0], dims[1], dims[2]);
+  grid.origin = glm::ivec3(extent[0], extent[2], extent[4]);
+  grid.dims = glm::ivec3(dims[0], dims[1], dims[2]);
   const vtkIdType n = scalars->GetNumberOfTuples();
-  this->Grid.sigma.resize(static_cast<size_t>(n));
-  for (vtkIdType i = 0; i < n; ++i)
+  grid.values.resize(static_cast<size_t>(n));
+  switch (scalars->GetDataType())
   {
-    const double x = (scalars->GetComponent(i, 0) - range[0]) / span * (kTableSize - 1.0);
-    const double c = std::min(std::max(x, 0.0), kTableSize - 1.0);
-    const int i0 = std::min(static_cast<int>(c), kTableSize - 2);
-    const double f = c - i0;
-    this->Grid.sigma[static_cast<size_t>(i)] =
-      static_cast<float>(table[i0] * (1.0 - f) + table[i0 + 1] * f);
+    vtkTemplateMacro(Normalise(static_cast<const VTK_TT*>(scalars->GetVoidPointer(0)), n, range[0],
+      span, grid.values.data()));
+    default:
+      for (vtkIdType i = 0; i < n; ++i)
+      {
+        grid.values[static_cast<size_t>(i)] =
+          static_cast<float>((scalars->GetComponent(i, 0) - range[0]) / span);
+      }
   }
+  grid.prepare();
   this->Sigma.Record(key);
   return true;
 }
@@ -211,11 +226,13 @@ void vtkScattererLightExchange::Exchange(vtkRenderer* renderer, vtkVolume* volum
   const bool hasPiece = piece && piece->GetNumberOfPoints() > 0 &&
     this->Internals->UpdateGrid(piece, volume, mapper, occlusion, gridKey);
   const IndexFrame frame = hasPiece ? FrameOf(piece, volume) : IndexFrame();
-  const double texel = std::max(1, mapper->GetTransportScale());
+  // Lines one voxel apart: a coarser map blurs the edges of the shadows it carries (a
+  // 2-voxel map doubled the error of the long-shadow test's composite).
+  const double texel = 1.0;
 
   // 1. Did anything change on any rank?
   scatterer_render::KeyWriter key;
-  key << hasPiece << '|' << gridKey << '|' << texel;
+  key << hasPiece << '|' << gridKey;
   for (int a = 0; a < 6; ++a)
   {
     key << ',' << owned[a] << ',' << whole[a];
@@ -238,9 +255,7 @@ void vtkScattererLightExchange::Exchange(vtkRenderer* renderer, vtkVolume* volum
   controller->AllGather(&changed, changes.data(), 1);
   if (std::find(changes.begin(), changes.end(), 1) == changes.end())
   {
-    this->LastExchangeMilliseconds = 0.0;
-    this->LastExchangeBytes = 0.0;
-    return;
+    return; // the maps stand; LastExchange* still describe the exchange that made them
   }
   this->Internals->Inputs.Record(key.Key());
 

@@ -87,7 +87,8 @@ public:
   };
   const Result& GetResult() const { return this->Current; }
 
-  /** Milliseconds the last exchange took on this rank (maps, messages, sums). */
+  /** Milliseconds the last exchange took on this rank (maps, messages, sums); frames
+   * that exchange nothing leave it as it is. */
   vtkGetMacro(LastExchangeMilliseconds, double);
   /** Bytes this rank received in the last exchange. */
   vtkGetMacro(LastExchangeBytes, double);

@@ -47,6 +47,43 @@ SPLIT_SHADOW_SCENE = {
 }
 
 
+# Shadows farther than any ghost layer: an opaque sheet (value 250) at x = 8..11 over
+# the lower half of z, then a translucent slab (value 100) from x = 12 to the end, lit
+# along +x. The sheet's shadow and the slab's own attenuation reach every piece of a
+# split along x, up to 116 voxels from the sheet; the automatic ghost layers are 37.
+LONG_SHADOW_DIMS = (128, 40, 48)
+LONG_SHADOW_SCENE = dict(SPLIT_SHADOW_SCENE)
+LONG_SHADOW_SCENE["opacity"] = [[0, 0.0], [90, 0.0], [100, 0.03], [200, 0.03], [250, 1.0],
+                                [255, 1.0]]
+# The same volume lit by a positional light inside it, near its far end (x = 120): its
+# light crosses the slab toward every other piece. No cone (180 degrees), no falloff.
+POINT_LIGHT_SCENE = dict(LONG_SHADOW_SCENE)
+POINT_LIGHT_SCENE["light"] = {"position": [120.0, 19.5, 36.0], "focal_point": [0.0, 19.5, 36.0],
+                              "intensity": 1.0, "positional": True}
+
+
+def write_long_shadow_volume(folder):
+    """Writes the long-shadow volume as <folder>/long-shadow.mhd (+ .raw)."""
+    import numpy
+    nx, ny, nz = LONG_SHADOW_DIMS
+    volume = numpy.zeros((nz, ny, nx), dtype=numpy.uint8)  # [z][y][x], x fastest
+    volume[:, :, 12:] = 100
+    volume[:nz // 2, :, 8:12] = 250
+    return _write_mhd(volume, folder, "long-shadow")
+
+
+def _write_mhd(volume, folder, name):
+    nz, ny, nx = volume.shape
+    os.makedirs(folder, exist_ok=True)
+    volume.tofile(os.path.join(folder, name + ".raw"))
+    path = os.path.join(folder, name + ".mhd")
+    with open(path, "w") as f:
+        f.write("ObjectType = Image\nNDims = 3\nDimSize = %d %d %d\n" % (nx, ny, nz))
+        f.write("ElementType = MET_UCHAR\nElementSpacing = 1 1 1\nOffset = 0 0 0\n")
+        f.write("ElementDataFile = %s.raw\n" % name)
+    return path
+
+
 def write_split_shadow_volume(folder):
     """Writes the split-shadow volume as <folder>/split-shadow.mhd (+ .raw)."""
     import numpy
@@ -54,14 +91,7 @@ def write_split_shadow_volume(folder):
     volume = numpy.zeros((nz, ny, nx), dtype=numpy.uint8)  # [z][y][x], x fastest
     volume[:, :, 52:] = 100
     volume[:nz // 2, :, 58:62] = 250
-    os.makedirs(folder, exist_ok=True)
-    volume.tofile(os.path.join(folder, "split-shadow.raw"))
-    path = os.path.join(folder, "split-shadow.mhd")
-    with open(path, "w") as f:
-        f.write("ObjectType = Image\nNDims = 3\nDimSize = %d %d %d\n" % (nx, ny, nz))
-        f.write("ElementType = MET_UCHAR\nElementSpacing = 1 1 1\nOffset = 0 0 0\n")
-        f.write("ElementDataFile = split-shadow.raw\n")
-    return path
+    return _write_mhd(volume, folder, "split-shadow")
 
 
 _MET_TYPES = {"MET_SHORT": "short", "MET_USHORT": "unsigned short", "MET_UCHAR": "unsigned char",
@@ -129,7 +159,8 @@ def open_volume(mhd_path):
 
 
 def make_view(size, scene=CT_HEAD_SCENE):
-    """Render view with a black background and the scene's one light."""
+    """Render view with a black background and the scene's one light (directional,
+    or positional without cone when the scene says so)."""
     view = CreateView("RenderView")
     SetActiveView(view)
     view.ViewSize = list(size)
@@ -139,7 +170,11 @@ def make_view(size, scene=CT_HEAD_SCENE):
     view.UseLight = 0  # no light kit: the scene's single directional light only
     light = AddLight(view=view)
     light.Coords = "Scene"
-    light.Type = "Directional"
+    if scene["light"].get("positional"):
+        light.Type = "Positional"
+        light.ConeAngle = 180.0
+    else:
+        light.Type = "Directional"
     light.Position = scene["light"]["position"]
     light.FocalPoint = scene["light"]["focal_point"]
     light.Intensity = scene["light"]["intensity"]
@@ -206,7 +241,7 @@ def rank0_info(display):
     display.SMProxy.UpdatePropertyInformation()
     names = ("ScattererRequestedGhostLayersInfo", "ScattererRendersOwnedPartOnlyInfo",
              "ScattererOwnedBoundsInfo", "ScattererPieceMemoryKiBInfo",
-             "ScattererShaderFeaturesInfo")
+             "ScattererShaderFeaturesInfo", "ScattererLightExchangeInfo")
     info = {}
     for name in names:
         prop = display.SMProxy.GetProperty(name)

@@ -1,11 +1,13 @@
 """pvbatch tests of the ScattererTemplate ParaView plugin (run by CTest, see CMakeLists).
 
   pvbatch pvbatch_test.py ct-head-one-rank   --out-dir D --baseline B
-  mpirun -np 2 pvbatch pvbatch_test.py ct-head-two-ranks --out-dir D
+  mpirun -np N pvbatch pvbatch_test.py ct-head-ranks --out-dir D          (N = 2 or 4)
   pvbatch pvbatch_test.py split-shadow-one-rank --out-dir D
   mpirun -np 2 pvbatch pvbatch_test.py split-shadow-two-ranks --out-dir D
+  pvbatch pvbatch_test.py long-shadow-one-rank --out-dir D
+  mpirun -np N pvbatch pvbatch_test.py long-shadow-ranks --out-dir D      (N = 2 or 4)
 
-The one-rank cases write the reference images the two-rank cases compare against
+The one-rank cases write the reference images the several-rank cases compare against
 (CTest fixtures order them). Exit status 0 when every check holds; each check prints
 what it measured.
 """
@@ -28,10 +30,12 @@ SIZE = (200, 200)
 CT_HEAD_TWO_RANK_TOLERANCE = {"mean": 2.0, "fraction_over_32": 0.01}
 # Split-shadow scene: the border runs through the shadow, so a piece without its
 # neighbour's sheet is visibly brighter there; with the ghost layers it is not. (The
-# scene keeps all matter the light crosses within the ghost layers: a piece sees only
-# the light that crosses its own voxels and ghosts until pieces exchange light;
-# docs/paraview.md, "What a piece sees".)
+# scene keeps all matter the light crosses within the ghost layers.)
 SPLIT_SHADOW_TOLERANCE = {"mean": 0.5, "fraction_over_32": 0.002}
+# Long-shadow and point-light scenes: the light crosses pieces farther than any ghost
+# layer; with the light exchange the pieces composite to the one-process picture. The
+# same bound as the split-shadow scene.
+LONG_SHADOW_TOLERANCE = SPLIT_SHADOW_TOLERANCE
 # "Scatterer Volume" with illumination off vs ParaView's "Volume": the same ray caster
 # and settings, but each mapper jitters its ray starts with its own noise texture.
 STOCK_TOLERANCE = {"mean": 2.0, "fraction_over_32": 0.01}
@@ -54,7 +58,7 @@ def within(stats, tolerance):
 _views = {}
 
 
-def render(mhd, scene, representation, path, ghost_layers=-1, illumination=True):
+def render(mhd, scene, representation, path, ghost_layers=-1, illumination=True, exchange=True):
     # One view per scene and process: a second render view would start from a camera
     # that ParaView resets to the data.
     if id(scene) not in _views:
@@ -65,13 +69,14 @@ def render(mhd, scene, representation, path, ghost_layers=-1, illumination=True)
     if representation == "Scatterer Volume":
         display.ScattererGhostLayers = ghost_layers
         display.ScattererIllumination = 1 if illumination else 0
+        display.ScattererLightExchange = 1 if exchange else 0
     first, frames = scenes.timed_renders(view, 2)
     scenes.save(view, path, SIZE)
     info = scenes.rank0_info(display) if representation == "Scatterer Volume" else {}
     Hide(reader, view)
-    print("rendered %s (%s, ghost layers %s): first frame %.0f ms, then %.0f ms; %s" % (
-        os.path.basename(path), representation, ghost_layers, first, min(frames),
-        info))
+    print("rendered %s (%s, ghost layers %s, exchange %s): first frame %.0f ms, then %.0f ms; %s"
+          % (os.path.basename(path), representation, ghost_layers, exchange, first, min(frames),
+             info))
     return info
 
 
@@ -95,9 +100,10 @@ def ct_head_one_rank(args):
           "Volume does: %s within %s" % (same, STOCK_TOLERANCE))
 
 
-def ct_head_two_ranks(args):
-    check(scenes.number_of_ranks() == 2, "runs on 2 ranks (got %d)" % scenes.number_of_ranks())
-    ours = os.path.join(args.out_dir, "ct-head-2ranks.png")
+def ct_head_ranks(args):
+    ranks = scenes.number_of_ranks()
+    check(ranks > 1, "runs on several ranks (got %d)" % ranks)
+    ours = os.path.join(args.out_dir, "ct-head-%dranks.png" % ranks)
     info = render(args.data, scenes.CT_HEAD_SCENE, "Scatterer Volume", ours)
     header = scenes.read_mhd_header(args.data)
     spacing = [float(v) for v in header["ElementSpacing"].split()]
@@ -115,26 +121,67 @@ def ct_head_two_ranks(args):
     bounds = info["ScattererOwnedBoundsInfo"]
     whole = [(dims[a] - 1) * spacing[a] for a in range(3)]
     split = [a for a in range(3) if bounds[2 * a + 1] - bounds[2 * a] < whole[a] - 1e-3]
-    check(len(split) == 1, "rank 0 owns part of the volume along one axis: bounds %s" % bounds)
+    check(len(split) >= 1, "rank 0 owns part of the volume: bounds %s" % bounds)
+    check_exchange(info, ranks)
+    # With the light exchange, each piece is shaded by the whole head between it and the
+    # light, and the pieces composite to the one-process picture.
     one_rank = os.path.join(args.out_dir, "ct-head-1rank.png")
-    # With the automatic ghost layers a piece misses the shadow that the other piece's
-    # half of the head casts into it (the light comes along the split axis): shown for
-    # information, until pieces exchange light (docs/paraview.md, "What a piece sees").
-    print("for information, automatic ghost layers, 2 ranks vs 1: %s"
-          % compare.difference(ours, one_rank))
-    # Ghost layers that hold all the matter between the light and each piece: the
-    # pieces are then lit exactly as the whole volume, and composite to its picture.
-    covered = os.path.join(args.out_dir, "ct-head-2ranks-covered.png")
-    render(args.data, scenes.CT_HEAD_SCENE, "Scatterer Volume", covered, ghost_layers=max(dims))
-    stats = compare.difference(covered, one_rank)
+    stats = compare.difference(ours, one_rank)
     check(within(stats, CT_HEAD_TWO_RANK_TOLERANCE),
-          "with ghost layers that cover the light's path, the 2-rank image matches the 1-rank "
-          "image: %s within %s" % (stats, CT_HEAD_TWO_RANK_TOLERANCE))
-    # For scale: the same comparison for ParaView's own Volume representation.
-    stock = os.path.join(args.out_dir, "ct-head-2ranks-stock.png")
+          "with the light exchange, the %d-rank image matches the 1-rank image: %s within %s"
+          % (ranks, stats, CT_HEAD_TWO_RANK_TOLERANCE))
+    # For scale: ParaView's own Volume representation on the same comparison (rays
+    # restart at piece borders), and ours without the exchange.
+    stock = os.path.join(args.out_dir, "ct-head-%dranks-stock.png" % ranks)
     render(args.data, scenes.CT_HEAD_SCENE, "Volume", stock)
-    print("for scale, ParaView's Volume, 2 ranks vs 1: %s"
-          % compare.difference(stock, os.path.join(args.out_dir, "ct-head-1rank-stock.png")))
+    print("for scale, ParaView's Volume, %d ranks vs 1: %s"
+          % (ranks, compare.difference(stock, os.path.join(args.out_dir, "ct-head-1rank-stock.png"))))
+    alone = os.path.join(args.out_dir, "ct-head-%dranks-no-exchange.png" % ranks)
+    render(args.data, scenes.CT_HEAD_SCENE, "Scatterer Volume", alone, exchange=False)
+    print("for information, without the light exchange, %d ranks vs 1: %s"
+          % (ranks, compare.difference(alone, one_rank)))
+
+
+def check_exchange(info, ranks):
+    """Rank 0 exchanged light with the others, and its transport used the maps."""
+    count, ms, received, used = info["ScattererLightExchangeInfo"]
+    check(count >= 1 and used == 1, "rank 0 exchanged light (%d exchanges) and its transport used "
+          "the maps (%d)" % (count, used))
+    print("light exchange on rank 0 (last frame that exchanged): %.1f ms, %.0f bytes received "
+          "from %d ranks" % (ms, received, ranks - 1))
+
+
+def long_shadow_one_rank(args):
+    mhd = scenes.write_long_shadow_volume(args.out_dir)
+    for name, scene in (("long-shadow", scenes.LONG_SHADOW_SCENE),
+                        ("point-light", scenes.POINT_LIGHT_SCENE)):
+        render(mhd, scene, "Scatterer Volume", os.path.join(args.out_dir, name + "-1rank.png"))
+
+
+def long_shadow_ranks(args):
+    ranks = scenes.number_of_ranks()
+    check(ranks > 1, "runs on several ranks (got %d)" % ranks)
+    mhd = os.path.join(args.out_dir, "long-shadow.mhd")
+    for name, scene in (("long-shadow", scenes.LONG_SHADOW_SCENE),
+                        ("point-light", scenes.POINT_LIGHT_SCENE)):
+        reference = os.path.join(args.out_dir, name + "-1rank.png")
+        ours = os.path.join(args.out_dir, "%s-%dranks.png" % (name, ranks))
+        info = render(mhd, scene, "Scatterer Volume", ours)
+        check(info["ScattererRendersOwnedPartOnlyInfo"][0] == 1, "rank 0 renders only its own part")
+        check_exchange(info, ranks)
+        stats = compare.difference(ours, reference)
+        check(within(stats, LONG_SHADOW_TOLERANCE),
+              "%s: with the light exchange (ghost layers %d) the %d-rank image matches the "
+              "1-rank image: %s within %s" % (name, info["ScattererRequestedGhostLayersInfo"][0],
+                                              ranks, stats, LONG_SHADOW_TOLERANCE))
+    # Control: without the exchange, the pieces beyond the ghost layers' reach lose the
+    # sheet's shadow and the slab's attenuation.
+    alone = os.path.join(args.out_dir, "long-shadow-%dranks-no-exchange.png" % ranks)
+    render(mhd, scenes.LONG_SHADOW_SCENE, "Scatterer Volume", alone, exchange=False)
+    stats = compare.difference(alone, os.path.join(args.out_dir, "long-shadow-1rank.png"))
+    check(not within(stats, LONG_SHADOW_TOLERANCE),
+          "control: without the light exchange the %d-rank image misses the long shadow: %s "
+          "exceeds %s" % (ranks, stats, LONG_SHADOW_TOLERANCE))
 
 
 def split_shadow_one_rank(args):
@@ -222,9 +269,10 @@ def progress_and_interaction_one_rank(args):
           % features)
 
 
-CASES = {"ct-head-one-rank": ct_head_one_rank, "ct-head-two-ranks": ct_head_two_ranks,
+CASES = {"ct-head-one-rank": ct_head_one_rank, "ct-head-ranks": ct_head_ranks,
          "split-shadow-one-rank": split_shadow_one_rank,
          "split-shadow-two-ranks": split_shadow_two_ranks,
+         "long-shadow-one-rank": long_shadow_one_rank, "long-shadow-ranks": long_shadow_ranks,
          "progress-interaction-one-rank": progress_and_interaction_one_rank}
 
 parser = argparse.ArgumentParser(description="pvbatch tests of the ScattererTemplate plugin")

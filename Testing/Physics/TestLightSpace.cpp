@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -25,12 +26,12 @@ ls::ExtinctionGrid grid(int n, bool varying)
 {
   ls::ExtinctionGrid g;
   g.dims = glm::ivec3(n);
-  g.sigma.resize(static_cast<size_t>(n) * n * n);
+  g.values.resize(static_cast<size_t>(n) * n * n);
   for (int z = 0; z < n; ++z) {
     for (int y = 0; y < n; ++y) {
       for (int x = 0; x < n; ++x) {
         const double r2 = (x - 9.0) * (x - 9.0) + (y - 7.0) * (y - 7.0) + (z - 8.0) * (z - 8.0);
-        g.sigma[x + n * (y + static_cast<size_t>(n) * z)] =
+        g.values[x + n * (y + static_cast<size_t>(n) * z)] =
           varying ? static_cast<float>(0.05 + 0.4 * std::exp(-r2 / 30.0) + 0.01 * x) : 0.5f;
       }
     }
@@ -209,4 +210,55 @@ TEST(LightSpace, FourPiecesAddUpToTheWholeVolume)
     }
     EXPECT_GT(checked, 200);
   }
+}
+
+TEST(LightSpace, SkippingEmptySpaceChangesNothing)
+{
+  // A grid that is mostly transparent (table 0 below 0.5), with a dense ball: the depths
+  // with empty-space skipping are those without.
+  ls::ExtinctionGrid g;
+  const int n = 40;
+  g.dims = glm::ivec3(n);
+  g.values.resize(static_cast<size_t>(n) * n * n);
+  for (int z = 0; z < n; ++z) {
+    for (int y = 0; y < n; ++y) {
+      for (int x = 0; x < n; ++x) {
+        const double r = glm::length(glm::dvec3(x, y, z) - glm::dvec3(25.0, 18.0, 21.0));
+        g.values[x + n * (y + static_cast<size_t>(n) * z)] =
+          static_cast<float>(r < 7.0 ? 0.9 : 0.3);
+      }
+    }
+  }
+  g.table = { 0.0f, 0.0f, 0.0f, 0.5f, 2.0f };
+  const ls::Box whole = box(0, n - 1, 0, n - 1, 0, n - 1);
+  const glm::dmat3 unit(1.0);
+  for (const ls::Map& m : { ls::directionalMap(glm::dvec3(0.3, 0.5, 0.8), whole, 1.0, 256),
+         ls::positionalMap(glm::dvec3(5.0, 30.0, 20.0), 64) }) {
+    const std::vector<float> plain = ls::opticalDepth(m, g, whole, unit, 0.5);
+    ls::ExtinctionGrid skipping = g;
+    skipping.prepare();
+    EXPECT_LT(std::count(skipping.occupied.begin(), skipping.occupied.end(), 1),
+      static_cast<long>(skipping.occupied.size()));
+    const std::vector<float> skipped = ls::opticalDepth(m, skipping, whole, unit, 0.5);
+    double total = 0.0;
+    for (size_t i = 0; i < plain.size(); ++i) {
+      EXPECT_EQ(plain[i], skipped[i]) << i;
+      total += plain[i];
+    }
+    EXPECT_GT(total, 1.0);
+  }
+}
+
+TEST(LightSpace, ScalarsAreInterpolatedBeforeTheTransferFunction)
+{
+  // As the ray caster reads its transfer function: halfway between a scalar of 0 and
+  // one of 1 the scalar is 0.5, whose sigma is the table's middle entry, not the mean
+  // of the ends.
+  ls::ExtinctionGrid g;
+  g.dims = glm::ivec3(2, 1, 1);
+  g.values = { 0.0f, 1.0f };
+  g.table = { 0.0f, 0.0f, 0.0f, 2.0f, 8.0f };
+  EXPECT_NEAR(g.at(glm::dvec3(0.5, 0.0, 0.0)), 0.0, 1e-12);
+  EXPECT_NEAR(g.at(glm::dvec3(0.875, 0.0, 0.0)), 5.0, 1e-12);
+  EXPECT_NEAR(g.at(glm::dvec3(1.0, 0.0, 0.0)), 8.0, 1e-12);
 }

@@ -160,7 +160,7 @@ double ExtinctionGrid::at(const glm::dvec3& p) const
     const size_t x = static_cast<size_t>(std::min(i0[0] + dx, dims.x - 1));
     const size_t y = static_cast<size_t>(std::min(i0[1] + dy, dims.y - 1));
     const size_t z = static_cast<size_t>(std::min(i0[2] + dz, dims.z - 1));
-    return static_cast<double>(sigma[x + dims.x * (y + dims.y * z)]);
+    return static_cast<double>(values[x + dims.x * (y + dims.y * z)]);
   };
   double result = 0.0;
   for (int c = 0; c < 8; ++c) {
@@ -170,7 +170,71 @@ double ExtinctionGrid::at(const glm::dvec3& p) const
       result += w * value(dx, dy, dz);
     }
   }
-  return result;
+  if (table.size() < 2) {
+    return result;
+  }
+  const double s = std::min(std::max(result, 0.0), 1.0) * (table.size() - 1.0);
+  const size_t entry = std::min(static_cast<size_t>(s), table.size() - 2);
+  const double w = s - static_cast<double>(entry);
+  return table[entry] * (1.0 - w) + table[entry + 1] * w;
+}
+
+void ExtinctionGrid::prepare()
+{
+  occupied.clear();
+  if (dims.x < 1 || dims.y < 1 || dims.z < 1 || values.empty()) {
+    return;
+  }
+  bricks = (dims + glm::ivec3(kBrick - 1)) / kBrick;
+  occupied.assign(static_cast<size_t>(bricks.x) * bricks.y * bricks.z, 0);
+  for (int bz = 0; bz < bricks.z; ++bz) {
+    for (int by = 0; by < bricks.y; ++by) {
+      for (int bx = 0; bx < bricks.x; ++bx) {
+        // The brick's points and the next one along each axis: what a sample inside the
+        // brick interpolates.
+        float lo = std::numeric_limits<float>::infinity(), hi = -lo;
+        for (int z = bz * kBrick; z <= std::min((bz + 1) * kBrick, dims.z - 1); ++z) {
+          for (int y = by * kBrick; y <= std::min((by + 1) * kBrick, dims.y - 1); ++y) {
+            for (int x = bx * kBrick; x <= std::min((bx + 1) * kBrick, dims.x - 1); ++x) {
+              const float v =
+                values[x + static_cast<size_t>(dims.x) * (y + static_cast<size_t>(dims.y) * z)];
+              lo = std::min(lo, v);
+              hi = std::max(hi, v);
+            }
+          }
+        }
+        bool any = hi > 0.0f;
+        if (table.size() >= 2) {
+          // Every table entry a scalar in [lo, hi] interpolates.
+          const double n = table.size() - 1.0;
+          const size_t first =
+            static_cast<size_t>(std::floor(std::clamp(double(lo), 0.0, 1.0) * n));
+          const size_t last = std::min(
+            static_cast<size_t>(std::ceil(std::clamp(double(hi), 0.0, 1.0) * n)), table.size() - 1);
+          any = false;
+          for (size_t e = first; e <= last && !any; ++e) {
+            any = table[e] > 0.0f;
+          }
+        }
+        occupied[bx + static_cast<size_t>(bricks.x) * (by + static_cast<size_t>(bricks.y) * bz)] =
+          any;
+      }
+    }
+  }
+}
+
+bool ExtinctionGrid::empty(const glm::dvec3& p) const
+{
+  if (occupied.empty()) {
+    return false;
+  }
+  int b[3];
+  for (int a = 0; a < 3; ++a) {
+    const double x = std::min(std::max(p[a] - origin[a], 0.0), dims[a] - 1.0);
+    b[a] = std::min(static_cast<int>(x) / kBrick, bricks[a] - 1);
+  }
+  return !occupied[b[0] +
+                   static_cast<size_t>(bricks.x) * (b[1] + static_cast<size_t>(bricks.y) * b[2])];
 }
 
 namespace {
@@ -182,7 +246,10 @@ double depthBetween(const Line& line, double t0, double t1, const ExtinctionGrid
   const double dt = (t1 - t0) / n;
   double sum = 0.0;
   for (int m = 0; m < n; ++m) {
-    sum += grid.at(line.origin + line.direction * (t0 + (m + 0.5) * dt));
+    const glm::dvec3 p = line.origin + line.direction * (t0 + (m + 0.5) * dt);
+    if (!grid.empty(p)) {
+      sum += grid.at(p);
+    }
   }
   return sum * dt * glm::length(indexToWorld * line.direction);
 }
@@ -210,7 +277,7 @@ std::vector<float> opticalDepth(const Map& map, const ExtinctionGrid& grid, cons
     throw std::invalid_argument("lightspace::opticalDepth: the step must be > 0");
   }
   std::vector<float> depth(static_cast<size_t>(map.size) * map.size, 0.0f);
-  if (owned.empty() || grid.sigma.empty()) {
+  if (owned.empty() || grid.values.empty()) {
     return depth;
   }
   const auto rows = [&](int first, int last) {
@@ -221,28 +288,13 @@ std::vector<float> opticalDepth(const Map& map, const ExtinctionGrid& grid, cons
         if (!clip(l, owned, t0, t1)) {
           continue;
         }
-        const int n = std::max(1, static_cast<int>(std::ceil((t1 - t0) / step)));
-        const double dt = (t1 - t0) / n;
-        double sum = 0.0;
-        for (int m = 0; m < n; ++m) {
-          sum += grid.at(l.origin + l.direction * (t0 + (m + 0.5) * dt));
-        }
         // Beer-Lambert's exponent over this piece: sigma_t times world length.
         depth[static_cast<size_t>(j) * map.size + i] =
-          static_cast<float>(sum * dt * glm::length(indexToWorld * l.direction));
+          static_cast<float>(depthBetween(l, t0, t1, grid, indexToWorld, step));
       }
     }
   };
-  const int threads =
-    std::max(1, std::min<int>(static_cast<int>(std::thread::hardware_concurrency()), map.size));
-  std::vector<std::thread> workers;
-  for (int t = 1; t < threads; ++t) {
-    workers.emplace_back(rows, map.size * t / threads, map.size * (t + 1) / threads);
-  }
-  rows(0, map.size / threads);
-  for (auto& w : workers) {
-    w.join();
-  }
+  forRows(map.size, rows);
   return depth;
 }
 

@@ -86,12 +86,27 @@ glm::dvec3 octahedralDecode(const glm::dvec2& p);
 bool clip(const Line& line, const Box& box, double& t0, double& t1);
 
 // sigma_t per world unit on a grid of points (x fastest), structured index of the
-// first point `origin`; trilinear between points, clamped at the grid's border.
+// first point `origin`. With a `table`, `values` are normalised scalars in [0, 1]:
+// interpolated trilinearly first and then looked up (linearly) in the table of sigma_t
+// over [0, 1], as a GPU ray caster reads its transfer function; without one, `values`
+// are sigma_t. Clamped at the grid's border.
 struct ExtinctionGrid {
   glm::ivec3 origin{ 0 };
   glm::ivec3 dims{ 0 };
-  std::vector<float> sigma;
+  std::vector<float> values;
+  std::vector<float> table;
   double at(const glm::dvec3& p) const;
+
+  // Empty-space skipping: after values and table are filled, prepare() marks the
+  // bricks of kBrick^3 points where sigma_t can be > 0 (a brick's scalar range, its
+  // far neighbours included, against the table); empty() is then true where at() is
+  // surely 0 (air, transparent tissue), and opticalDepth skips it. Without prepare()
+  // nothing is skipped.
+  static constexpr int kBrick = 8;
+  void prepare();
+  bool empty(const glm::dvec3& p) const;
+  glm::ivec3 bricks{ 0 };
+  std::vector<unsigned char> occupied;
 };
 
 // Optical depth of the matter inside `owned` along every line of `map`:
