@@ -12,24 +12,11 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 OUT="${1:-build-paraview/light-exchange-benchmark.csv}"
 FRAMES="${2:-7}"
-PV_BUILD="${PV_BUILD_DIR:-build-paraview}"
-export PYTHONPATH="$(cd "$PV_BUILD/paraview-python" && pwd)/usr/lib/python3/dist-packages"
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
-script=Examples/paraview/render_ct_head_pvbatch.py
-tmp="$(mktemp -d)"
+source Benchmarks/paraview/benchmark-env.sh
 echo "ranks,light_exchange,rank0_exchange_ms,rank0_exchange_bytes,first_frame_ms,median_frame_ms" > "$OUT"
 run() { # ranks exchange
-  local launch=(pvbatch) line=""
-  [ "$1" -gt 1 ] && launch=(mpirun -np "$1" -x PYTHONPATH pvbatch)
-  # pvbatch under Xvfb sometimes fails to open its window (docs/paraview.md): retry.
-  for try in 1 2 3; do
-    line="$(timeout 300 bash scripts/xvfb.sh "${launch[@]}" "$script" --out "$tmp/out.png" \
-      --frames "$FRAMES" --move-light --light-exchange "$2" 2>/dev/null |
-      grep '^SCATTERER_RESULT ' || true)"
-    [ -n "$line" ] && break
-  done
-  [ -n "$line" ] || { echo "no result for $1 ranks, exchange $2" >&2; return 1; }
-  echo "${line#SCATTERER_RESULT }" | /usr/bin/python3 -c '
+  pvbatch_result "$1" --frames "$FRAMES" --move-light --light-exchange "$2" |
+    /usr/bin/python3 -c '
 import json, sys
 r = json.loads(sys.stdin.read())
 print(",".join(str(x) for x in (r["ranks"], r["light_exchange"], r.get("rank0_exchange_ms", 0),

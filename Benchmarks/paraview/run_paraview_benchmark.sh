@@ -9,18 +9,11 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 OUT="${1:-build-paraview/paraview-benchmark.csv}"
 FRAMES="${2:-9}"
-PV_BUILD="${PV_BUILD_DIR:-build-paraview}"
-export PYTHONPATH="$(cd "$PV_BUILD/paraview-python" && pwd)/usr/lib/python3/dist-packages"
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
-script=Examples/paraview/render_ct_head_pvbatch.py
-tmp="$(mktemp -d)"
+source Benchmarks/paraview/benchmark-env.sh
 echo "ranks,representation,template_radius_mm,ghost_layers,rank0_piece_kib,first_frame_ms,median_frame_ms" > "$OUT"
 run() { # ranks representation radius
-  local launch=(pvbatch)
-  [ "$1" -gt 1 ] && launch=(mpirun -np "$1" -x PYTHONPATH pvbatch)
-  bash scripts/xvfb.sh "${launch[@]}" "$script" --out "$tmp/out.png" --frames "$FRAMES" \
-    --representation "$2" --template-radius "$3" 2>/dev/null | grep '^SCATTERER_RESULT ' |
-    sed 's/^SCATTERER_RESULT //' | /usr/bin/python3 -c '
+  pvbatch_result "$1" --frames "$FRAMES" --representation "$2" --template-radius "$3" |
+    /usr/bin/python3 -c '
 import json, sys
 r = json.loads(sys.stdin.read())
 print(",".join(str(x) for x in (r["ranks"], r["representation"].replace(" ", "_"),

@@ -64,16 +64,18 @@ POINT_LIGHT_SCENE["light"] = {"position": [120.0, 19.5, 36.0], "focal_point": [0
 
 def write_long_shadow_volume(folder):
     """Writes the long-shadow volume as <folder>/long-shadow.mhd (+ .raw)."""
+    return _write_sheet_and_slab(folder, "long-shadow", LONG_SHADOW_DIMS, 12, (8, 12))
+
+
+def _write_sheet_and_slab(folder, name, dims, slab_from, sheet):
+    """An empty volume with a translucent slab (value 100) from x = slab_from to the end
+    and an opaque sheet (value 250) over x in [sheet) and the lower half of z, written as
+    <folder>/<name>.mhd (+ .raw)."""
     import numpy
-    nx, ny, nz = LONG_SHADOW_DIMS
+    nx, ny, nz = dims
     volume = numpy.zeros((nz, ny, nx), dtype=numpy.uint8)  # [z][y][x], x fastest
-    volume[:, :, 12:] = 100
-    volume[:nz // 2, :, 8:12] = 250
-    return _write_mhd(volume, folder, "long-shadow")
-
-
-def _write_mhd(volume, folder, name):
-    nz, ny, nx = volume.shape
+    volume[:, :, slab_from:] = 100
+    volume[:nz // 2, :, sheet[0]:sheet[1]] = 250
     os.makedirs(folder, exist_ok=True)
     volume.tofile(os.path.join(folder, name + ".raw"))
     path = os.path.join(folder, name + ".mhd")
@@ -86,12 +88,7 @@ def _write_mhd(volume, folder, name):
 
 def write_split_shadow_volume(folder):
     """Writes the split-shadow volume as <folder>/split-shadow.mhd (+ .raw)."""
-    import numpy
-    nx, ny, nz = SPLIT_SHADOW_DIMS
-    volume = numpy.zeros((nz, ny, nx), dtype=numpy.uint8)  # [z][y][x], x fastest
-    volume[:, :, 52:] = 100
-    volume[:nz // 2, :, 58:62] = 250
-    return _write_mhd(volume, folder, "split-shadow")
+    return _write_sheet_and_slab(folder, "split-shadow", SPLIT_SHADOW_DIMS, 52, (58, 62))
 
 
 _MET_TYPES = {"MET_SHORT": "short", "MET_USHORT": "unsigned short", "MET_UCHAR": "unsigned char",

@@ -43,6 +43,32 @@ size_t at(const ls::Map& m, int i, int j)
 {
   return static_cast<size_t>(j) * m.size + i;
 }
+
+// The texel of the line through p.
+size_t texelOf(const ls::Map& m, const glm::dvec3& p)
+{
+  const glm::dvec2 c = m.coordinate(p) * static_cast<double>(m.size);
+  return at(m, static_cast<int>(c.x), static_cast<int>(c.y));
+}
+
+// Each piece's optical depth along the map's lines, and pointers to them.
+struct PieceDepths {
+  std::vector<std::vector<float>> maps;
+  std::vector<const float*> pointers;
+};
+
+PieceDepths depthsOf(const ls::Map& m, const ls::ExtinctionGrid& g,
+  const std::vector<ls::Box>& owned, const glm::dmat3& indexToWorld, double step)
+{
+  PieceDepths d;
+  for (const auto& b : owned) {
+    d.maps.push_back(ls::opticalDepth(m, g, b, indexToWorld, step));
+  }
+  for (const auto& v : d.maps) {
+    d.pointers.push_back(v.data());
+  }
+  return d;
+}
 } // namespace
 
 TEST(LightSpace, OctahedralMapRoundTrips)
@@ -121,13 +147,9 @@ TEST(LightSpace, ThePieceNearerTheLightIsInFront)
   const glm::dvec3 p(2.0, 7.5, 7.5); // in piece 0
   for (const bool fromPlusX : { true, false }) {
     const ls::Map m = ls::directionalMap(glm::dvec3(fromPlusX ? 1 : -1, 0, 0), whole, 1.0, 64);
-    std::vector<std::vector<float>> d;
-    for (const auto& b : owned) {
-      d.push_back(ls::opticalDepth(m, g, b, unit, 0.5));
-    }
-    const std::vector<const float*> depths = { d[0].data(), d[1].data() };
-    const glm::dvec2 c = m.coordinate(p) * static_cast<double>(m.size);
-    const size_t texel = at(m, static_cast<int>(c.x), static_cast<int>(c.y));
+    const PieceDepths d = depthsOf(m, g, owned, unit, 0.5);
+    const std::vector<const float*>& depths = d.pointers;
+    const size_t texel = texelOf(m, p);
     const std::vector<float> e0 = ls::enteringDepth(m, owned, 0, owned[0], depths, g, unit, 0.5);
     const std::vector<float> e1 = ls::enteringDepth(m, owned, 1, owned[1], depths, g, unit, 0.5);
     // Light from +x: piece 1 (x 5..15, depth 0.5 * 10) shades piece 0, not the reverse.
@@ -137,13 +159,9 @@ TEST(LightSpace, ThePieceNearerTheLightIsInFront)
   // A positional light inside piece 1, at x = 9: piece 0 is shaded by x 5..9 only,
   // and piece 1 by nothing.
   const ls::Map m = ls::positionalMap(glm::dvec3(9.0, 7.5, 7.5), 128);
-  std::vector<std::vector<float>> d;
-  for (const auto& b : owned) {
-    d.push_back(ls::opticalDepth(m, g, b, unit, 0.25));
-  }
-  const std::vector<const float*> depths = { d[0].data(), d[1].data() };
-  const glm::dvec2 c = m.coordinate(p) * static_cast<double>(m.size);
-  const size_t texel = at(m, static_cast<int>(c.x), static_cast<int>(c.y));
+  const PieceDepths d = depthsOf(m, g, owned, unit, 0.25);
+  const std::vector<const float*>& depths = d.pointers;
+  const size_t texel = texelOf(m, p);
   EXPECT_NEAR(
     ls::enteringDepth(m, owned, 0, owned[0], depths, g, unit, 0.25)[texel], 0.5 * 4.0, 0.05);
   EXPECT_NEAR(ls::enteringDepth(m, owned, 1, owned[1], depths, g, unit, 0.25)[texel], 0.0, 1e-6);
@@ -167,14 +185,8 @@ TEST(LightSpace, FourPiecesAddUpToTheWholeVolume)
     ls::positionalMap(glm::dvec3(14.0, 14.0, 9.0), 128) };
   for (const ls::Map& m : maps) {
     const std::vector<float> all = ls::opticalDepth(m, g, whole, indexToWorld, 0.25);
-    std::vector<std::vector<float>> d;
-    for (const auto& b : owned) {
-      d.push_back(ls::opticalDepth(m, g, b, indexToWorld, 0.25));
-    }
-    std::vector<const float*> depths;
-    for (const auto& v : d) {
-      depths.push_back(v.data());
-    }
+    const PieceDepths d = depthsOf(m, g, owned, indexToWorld, 0.25);
+    const std::vector<const float*>& depths = d.pointers;
     std::vector<ls::Box> reach;
     std::vector<std::vector<float>> entering, local;
     for (int k = 0; k < 4; ++k) {
