@@ -114,8 +114,10 @@ struct vtkScattererLightExchange::vtkInternals
   scatterer_render::ChangeKey Sigma;  // of the extinction grid
   ls::ExtinctionGrid Grid;
 
-  /** sigma_t x OcclusionStrength per world unit at every point of @p piece; false if
-   * the piece has no single-component point scalars the mapper would render. */
+  /** The extinction grid of @p piece: its scalars normalised over their range, and
+   * sigma_t x OcclusionStrength per world unit tabulated over them (@p occlusion 0: no
+   * shadows). False if the piece has no single-component point scalars the mapper
+   * would render. @p key: what the grid was made from. */
   bool UpdateGrid(vtkImageData* piece, vtkVolume* volume, vtkScattererTemplateVolumeMapper* mapper,
     float occlusion, std::string& key);
 };
