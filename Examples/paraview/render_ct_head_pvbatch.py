@@ -37,6 +37,8 @@ parser.add_argument("--ghost-layers", type=int, default=-1,
 parser.add_argument("--frames", type=int, default=5)
 parser.add_argument("--move-light", action="store_true",
                     help="move the scene light every frame (a light change per frame)")
+parser.add_argument("--interactive", action="store_true",
+                    help="with --move-light: render as while the user drags (InteractiveRender)")
 parser.add_argument("--light-exchange", type=int, default=1, choices=[0, 1],
                     help="several ranks: exchange the light between the pieces (default 1)")
 args = parser.parse_args()
@@ -57,7 +59,7 @@ if args.move_light:
     for i in range(args.frames):
         light.Position = [c + (2.0 if i % 2 == 0 else -2.0) for c in light.Position]
         start = time.perf_counter()
-        view.StillRender()
+        view.InteractiveRender() if args.interactive else view.StillRender()
         frames.append((time.perf_counter() - start) * 1000.0)
         if args.representation == "Scatterer Volume":
             exchange_ms.append(scene_lib.rank0_info(display)["ScattererLightExchangeInfo"][1])
@@ -75,7 +77,7 @@ if args.representation == "Scatterer Volume":
                    "rank0_piece_kib": info["ScattererPieceMemoryKiBInfo"][0],
                    "rank0_owned_bounds": info["ScattererOwnedBoundsInfo"],
                    "shader": info["ScattererShaderFeaturesInfo"][0],
-                   "light_exchange": args.light_exchange,
+                   "light_exchange": args.light_exchange, "interactive": args.interactive,
                    "rank0_exchange_bytes": info["ScattererLightExchangeInfo"][2]})
     if exchange_ms:
         result["rank0_exchange_ms"] = round(statistics.median(exchange_ms), 1)

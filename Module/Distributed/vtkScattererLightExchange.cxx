@@ -37,7 +37,7 @@ namespace
 constexpr int kTableSize = 4096;
 // The largest map side: 1024^2 x 4 bytes per light and rank.
 constexpr int kMaxMapSize = 1024;
-// Steps along a line, in voxels (the data's own resolution).
+// Steps along a line, in map texels (one voxel for still frames).
 constexpr double kStep = 1.0;
 // Per rank in the header AllGather: holds a piece, owned box (6), lights, floats.
 constexpr int kHeader = 9;
@@ -228,13 +228,15 @@ void vtkScattererLightExchange::Exchange(vtkRenderer* renderer, vtkVolume* volum
   const bool hasPiece = piece && piece->GetNumberOfPoints() > 0 &&
     this->Internals->UpdateGrid(piece, volume, mapper, occlusion, gridKey);
   const IndexFrame frame = hasPiece ? FrameOf(piece, volume) : IndexFrame();
-  // Lines one voxel apart: a coarser map blurs the edges of the shadows it carries (a
-  // 2-voxel map doubled the error of the long-shadow test's composite).
-  const double texel = 1.0;
+  // Still frames: lines one voxel apart, since a coarser map blurs the edges of the
+  // shadows it carries (a 2-voxel map doubled the error of the long-shadow test's
+  // composite). Interactive frames: as coarse as the transport volume is then.
+  const double texel =
+    this->Interactive ? std::max(1, mapper->GetInteractiveTransportScale()) : 1.0;
 
   // 1. Did anything change on any rank?
   scatterer_render::KeyWriter key;
-  key << hasPiece << '|' << gridKey;
+  key << hasPiece << '|' << gridKey << '|' << texel;
   for (int a = 0; a < 6; ++a)
   {
     key << ',' << owned[a] << ',' << whole[a];
@@ -318,7 +320,7 @@ void vtkScattererLightExchange::Exchange(vtkRenderer* renderer, vtkVolume* volum
     for (const auto& map : maps)
     {
       const std::vector<float> d =
-        ls::opticalDepth(map, this->Internals->Grid, ownedBox, indexToWorld, kStep);
+        ls::opticalDepth(map, this->Internals->Grid, ownedBox, indexToWorld, texel * kStep);
       std::copy(d.begin(), d.end(), mine.begin() + static_cast<std::ptrdiff_t>(at));
       at += d.size();
     }
@@ -359,8 +361,8 @@ void vtkScattererLightExchange::Exchange(vtkRenderer* renderer, vtkVolume* volum
       }
       entering->Lo[0] = static_cast<float>(map.lo.x);
       entering->Lo[1] = static_cast<float>(map.lo.y);
-      entering->Depth =
-        ls::enteringDepth(map, boxes, self, reach, depths, this->Internals->Grid, frame.A, kStep);
+      entering->Depth = ls::enteringDepth(
+        map, boxes, self, reach, depths, this->Internals->Grid, frame.A, texel * kStep);
       lights[l].Entering = entering;
       at += static_cast<size_t>(map.size) * map.size;
     }
@@ -377,6 +379,7 @@ void vtkScattererLightExchange::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Controller: " << this->Controller << "\n";
   os << indent << "Enabled: " << (this->Enabled ? "On" : "Off") << "\n";
+  os << indent << "Interactive: " << (this->Interactive ? "On" : "Off") << "\n";
   os << indent << "Active: " << (this->Current.Active ? "yes" : "no") << "\n";
   os << indent << "ExchangeCount: " << this->ExchangeCount << "\n";
   os << indent << "LastExchangeMilliseconds: " << this->LastExchangeMilliseconds << "\n";

@@ -241,7 +241,8 @@ public:
    * with scale the larger of TransportScale and InteractiveTransportScale; plus one
    * transport voxel. Ghost layers this wide give a piece of a distributed volume the
    * in-scattering, multiple scattering and ambient light of the whole volume; shadows
-   * cast from farther away (other pieces) are not seen by a piece (docs/paraview.md).
+   * cast from farther away (other pieces) come in through the light exchange
+   * (SetLightExchange; docs/paraview.md).
    * Assumes an unscaled volume matrix.
    */
   double GetIlluminationReach(const double spacing[3]) const;

@@ -87,6 +87,11 @@ void vtkScattererVolumeRepresentation::ExchangeLight(vtkObject*, unsigned long, 
   }
   vtkImageData* piece =
     this->RendersOwnedPartOnly ? vtkImageData::SafeDownCast(this->Cache) : nullptr;
+  // While the user drags, coarser maps, as the transport volume is then coarser too.
+  auto* view = vtkPVView::SafeDownCast(this->GetView());
+  vtkRenderWindow* window = view ? view->GetRenderWindow() : nullptr;
+  this->LightExchange->SetInteractive(
+    window && window->GetDesiredUpdateRate() >= kInteractiveUpdateRate);
   this->LightExchange->Exchange(this->ObservedRenderer, this->Actor, this->GetScattererMapper(),
     piece, this->OwnedExtent, this->WholeExtent);
   this->LightExchangeInfo[0] = this->LightExchange->GetExchangeCount();
