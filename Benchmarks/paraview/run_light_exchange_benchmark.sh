@@ -22,7 +22,7 @@ import json, sys
 r = json.loads(sys.stdin.read())
 print(",".join(str(x) for x in (r["ranks"], "interactive" if r["interactive"] else "still",
       r["light_exchange"], r.get("rank0_exchange_ms", 0),
-      int(r["rank0_exchange_bytes"]), r["first_frame_ms"], r["median_frame_ms"])))' >> "$OUT"
+      int(r.get("rank0_exchange_bytes", 0)), r["first_frame_ms"], r["median_frame_ms"])))' >> "$OUT"
 }
 run 1 1
 for ranks in 2 4; do
