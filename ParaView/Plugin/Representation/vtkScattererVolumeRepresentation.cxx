@@ -80,16 +80,21 @@ bool vtkScattererVolumeRepresentation::RemoveFromView(vtkView* view)
 void vtkScattererVolumeRepresentation::ExchangeLight(vtkObject*, unsigned long, void*)
 {
   // Collective: the conditions are the same on every rank (the number of pieces, the
-  // visibility, the settings); a rank without a piece takes part with none.
-  if (this->Pieces <= 1 || !this->GetVisibility())
+  // visibility, the settings, the view's rendering mode); a rank without a piece takes
+  // part with none. Only when every rank renders this frame: without remote rendering
+  // (a rank could not open its window) or distributed rendering, the others would wait
+  // for it forever.
+  auto* renderView = vtkPVRenderView::SafeDownCast(this->GetView());
+  if (this->Pieces <= 1 || !this->GetVisibility() || !renderView ||
+    !renderView->GetRemoteRenderingAvailable() ||
+    !renderView->GetUseDistributedRenderingForRender())
   {
     return;
   }
   vtkImageData* piece =
     this->RendersOwnedPartOnly ? vtkImageData::SafeDownCast(this->Cache) : nullptr;
   // While the user drags, coarser maps, as the transport volume is then coarser too.
-  auto* view = vtkPVView::SafeDownCast(this->GetView());
-  vtkRenderWindow* window = view ? view->GetRenderWindow() : nullptr;
+  vtkRenderWindow* window = renderView->GetRenderWindow();
   this->LightExchange->SetInteractive(
     window && window->GetDesiredUpdateRate() >= kInteractiveUpdateRate);
   this->LightExchange->Exchange(this->ObservedRenderer, this->Actor, this->GetScattererMapper(),
