@@ -2,6 +2,7 @@
 
 #include "ScattererChangeKey.h"
 #include "ScattererSceneLights.h"
+#include "ScattererTransportUpdate.h"
 #include "vtkScattererTemplateVolumeMapper.h"
 
 #include "vtkAbstractMapper.h"
@@ -17,7 +18,6 @@
 #include "vtkVolumeProperty.h"
 
 #include <scatterer/LightSpace.h>
-#include <scatterer/Transport.h>
 
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
@@ -33,8 +33,6 @@ namespace ls = scatterer::lightspace;
 
 namespace
 {
-// Entries of the opacity table over the scalar range (as the transport's medium table).
-constexpr int kTableSize = 4096;
 // The largest map side: 1024^2 x 4 bytes per light and rank.
 constexpr int kMaxMapSize = 1024;
 // Steps along a line, in map texels (one voxel for still frames).
@@ -151,11 +149,14 @@ bool vtkScattererLightExchange::vtkInternals::UpdateGrid(vtkImageData* piece, vt
   scalars->GetRange(range, 0);
   const double span = range[1] > range[0] ? range[1] - range[0] : 1.0;
   ls::ExtinctionGrid& grid = this->Grid;
-  grid.table.resize(kTableSize);
-  for (int i = 0; i < kTableSize; ++i)
+  // The transport's own medium table (its fourth channel is sigma_t).
+  std::vector<float> medium(4 * static_cast<size_t>(scatterer_render::kMediumTableSize));
+  scatterer_render::TabulateMedium(
+    medium.data(), nullptr, nullptr, opacity, range[0], range[0] + span, unit);
+  grid.table.resize(scatterer_render::kMediumTableSize);
+  for (size_t i = 0; i < grid.table.size(); ++i)
   {
-    const double alpha = opacity->GetValue(range[0] + span * i / (kTableSize - 1.0));
-    grid.table[i] = static_cast<float>(occlusion * scatterer::extinctionFromOpacity(alpha, unit));
+    grid.table[i] = occlusion * medium[4 * i + 3];
   }
   int extent[6], dims[3];
   piece->GetExtent(extent);

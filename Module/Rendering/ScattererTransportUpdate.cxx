@@ -27,19 +27,14 @@
 
 namespace scatterer_render
 {
-namespace
-{
-// Entries of the medium and material tables over the scalar range.
-constexpr int kTableSize = 4096;
-
 // One row of the medium over the table coordinate: albedo from @p color (white when
 // none), extinction from @p opacity per @p unit distance.
 void TabulateMedium(float* row, vtkColorTransferFunction* color, vtkPiecewiseFunction* gray,
   vtkPiecewiseFunction* opacity, double lo, double hi, double unit)
 {
-  for (int i = 0; i < kTableSize; ++i)
+  for (int i = 0; i < kMediumTableSize; ++i)
   {
-    const double value = lo + (hi - lo) * i / (kTableSize - 1.0);
+    const double value = lo + (hi - lo) * i / (kMediumTableSize - 1.0);
     double rgb[3] = { 1.0, 1.0, 1.0 };
     if (gray)
     {
@@ -56,7 +51,6 @@ void TabulateMedium(float* row, vtkColorTransferFunction* color, vtkPiecewiseFun
     row[4 * i + 3] =
       static_cast<float>(scatterer::extinctionFromOpacity(opacity->GetValue(value), unit));
   }
-}
 }
 
 TransportUpdate::TransportUpdate() = default;
@@ -303,7 +297,7 @@ void TransportUpdate::UpdateTables(vtkVolume* vol, const FramePlan& plan,
   vtkScattererTransportVolume::Inputs& t = this->Inputs;
   vtkVolumeProperty* property = vol->GetProperty();
   const bool gray = property->GetColorChannels(0) == 1;
-  t.Medium.resize(4 * kTableSize);
+  t.Medium.resize(4 * kMediumTableSize);
   TabulateMedium(t.Medium.data(), gray ? nullptr : property->GetRGBTransferFunction(0),
     gray ? property->GetGrayTransferFunction(0) : nullptr, property->GetScalarOpacity(0), lo, hi,
     unit);
@@ -313,7 +307,7 @@ void TransportUpdate::UpdateTables(vtkVolume* vol, const FramePlan& plan,
   if (plan.Features.LabelMask)
   {
     t.MediumRows = 256;
-    t.Medium.resize(static_cast<size_t>(4) * kTableSize * t.MediumRows, 0.0f);
+    t.Medium.resize(static_cast<size_t>(4) * kMediumTableSize * t.MediumRows, 0.0f);
     for (int label : property->GetLabelMapLabels())
     {
       vtkPiecewiseFunction* labelOpacity = property->GetLabelScalarOpacity(label);
@@ -321,12 +315,12 @@ void TransportUpdate::UpdateTables(vtkVolume* vol, const FramePlan& plan,
       {
         continue;
       }
-      TabulateMedium(t.Medium.data() + static_cast<size_t>(4) * kTableSize * label,
+      TabulateMedium(t.Medium.data() + static_cast<size_t>(4) * kMediumTableSize * label,
         property->GetLabelColor(label), nullptr, labelOpacity, lo, hi, unit);
     }
   }
   const double tableRange[2] = { lo, hi };
-  t.MaterialTable = scatterer_scene::MaterialTable(plan.Materials, tableRange, kTableSize);
+  t.MaterialTable = scatterer_scene::MaterialTable(plan.Materials, tableRange, kMediumTableSize);
   // Materials and their kernels: the merged templates, in the material's mean free
   // paths (scatterer/Transport.h), at most one template radius.
   const auto& mats = plan.Materials.Materials;

@@ -20,7 +20,9 @@
 #include <functional>
 #include <string>
 
+class vtkColorTransferFunction;
 class vtkImageData;
+class vtkPiecewiseFunction;
 class vtkPlaneCollection;
 class vtkRenderer;
 class vtkVolume;
@@ -33,6 +35,17 @@ struct FramePlan;
 struct IlluminationParameters;
 class TemplateCache;
 class WarnOnce;
+
+/** Entries of the medium and material tables over the scalar range. */
+constexpr int kMediumTableSize = 4096;
+
+/**
+ * One row of the medium over [lo, hi] (kMediumTableSize entries of 4 floats): albedo rgb
+ * from @p color or @p gray (white when neither), and sigma_t per world unit from
+ * @p opacity in VTK's convention with @p unit the ScalarOpacityUnitDistance.
+ */
+void TabulateMedium(float* row, vtkColorTransferFunction* color, vtkPiecewiseFunction* gray,
+  vtkPiecewiseFunction* opacity, double lo, double hi, double unit);
 
 /** What the transport reads of the mapper besides the plan (its public state). */
 struct TransportSource
