@@ -79,6 +79,59 @@ std::string Unsupported(
   }
   return "";
 }
+
+// How the components make colour and opacity (VTK's rules), and which one selects the
+// materials; or why this input cannot be lit.
+std::string PlanComponents(vtkVolumeProperty* property, const VolumeSource& source,
+  const IlluminationParameters& parameters, FramePlan& plan)
+{
+  using Scalars = scatterer_shader::Features::Scalars;
+  const int n = plan.Scalars->GetNumberOfComponents();
+  plan.Features.Components = Scalars::One;
+  plan.MaterialComponent = 0;
+  if (n == 1)
+  {
+    return "";
+  }
+  const std::string count = std::to_string(n) + " ";
+  if (n > 4)
+  {
+    return count + "components (VTK's ray caster takes at most 4)";
+  }
+  if (!parameters.Transport())
+  {
+    return "multi-component scalars in per-sample mode (the transport mode lights them)";
+  }
+  if (source.Mask && source.LabelMapMask)
+  {
+    return "a label-map mask on multi-component scalars";
+  }
+  if (property->GetIndependentComponents())
+  {
+    // Materials are scalar ranges of one component: the first one the picture shows.
+    plan.Features.Components = Scalars::Independent;
+    for (int c = n - 1; c >= 0; --c)
+    {
+      double range[2];
+      plan.Scalars->GetFiniteRange(range, c);
+      if (property->GetComponentWeight(c) > 0.0 &&
+        scatterer_scene::MaxOpacity(property->GetScalarOpacity(c), range[0], range[1]) > 0.0)
+      {
+        plan.MaterialComponent = c;
+      }
+    }
+    return "";
+  }
+  if (n == 3)
+  {
+    return "3 dependent components (VTK's ray caster takes opacity from a 2nd or 4th)";
+  }
+  // Luminance + alpha, RGBA: the opacity function reads the last component; it is the
+  // one that decides what is matter, so it selects the materials.
+  plan.Features.Components = Scalars::Dependent;
+  plan.MaterialComponent = n - 1;
+  return "";
+}
 }
 
 FramePlanner::FramePlanner() = default;
@@ -108,13 +161,12 @@ std::string FramePlanner::Plan(vtkRenderer* ren, vtkVolume* vol, const VolumeSou
   {
     return "no scalars";
   }
-  if (plan.Scalars->GetNumberOfComponents() != 1)
+  const std::string components = PlanComponents(vol->GetProperty(), source, parameters, plan);
+  if (!components.empty())
   {
-    warn("Scatterer-template illumination needs single-component scalars (intensities or "
-         "a label map); these have " +
-      std::to_string(plan.Scalars->GetNumberOfComponents()) +
-      " components, so this volume renders as vtkOpenGLGPUVolumeRayCastMapper would.");
-    return "multi-component scalars";
+    warn("Scatterer-template illumination does not apply to " + components +
+      "; this volume renders as vtkOpenGLGPUVolumeRayCastMapper would.");
+    return components;
   }
   plan.Lights = scatterer_scene::CollectLights(ren, vol->GetProperty());
   if (plan.Lights.Count() == 0)
@@ -188,7 +240,7 @@ std::string FramePlanner::PlanMaterials(vtkVolume* vol, const VolumeSource& sour
 {
   vtkVolumeProperty* property = vol->GetProperty();
   double range[2];
-  plan.Scalars->GetFiniteRange(range, 0);
+  plan.Scalars->GetFiniteRange(range, plan.MaterialComponent);
   // Materials are derived over the derivation range when one is set (a piece of a
   // split volume: the whole volume's range), so every piece derives the same ones.
   double derivation[2] = { range[0], range[1] };
@@ -199,7 +251,7 @@ std::string FramePlanner::PlanMaterials(vtkVolume* vol, const VolumeSource& sour
   }
   const auto& requested = *requests.Materials;
   vtkVolumeProperty* materialProperty =
-    this->MaterialProperty(property, source.Mask && source.LabelMapMask, derivation);
+    this->MaterialProperty(property, source.Mask && source.LabelMapMask, derivation, plan);
   plan.Materials = scatterer_scene::BuildMaterials(requested, materialProperty, range, derivation);
   plan.MaterialsBuilt = true;
   plan.SpeedRatios = scatterer_scene::SpeedRatios(plan.Materials);
@@ -215,7 +267,7 @@ std::string FramePlanner::PlanMaterials(vtkVolume* vol, const VolumeSource& sour
   }
   if (!requested.empty())
   {
-    this->WarnUnassigned(property, range, warn, plan);
+    this->WarnUnassigned(materialProperty, range, warn, plan);
   }
   return "";
 }
@@ -224,8 +276,24 @@ std::string FramePlanner::PlanMaterials(vtkVolume* vol, const VolumeSource& sour
 // volume's own, label 0) makes visible: materials are derived from their maximum,
 // tabulated again only when a function or the range changes (not every frame).
 vtkVolumeProperty* FramePlanner::MaterialProperty(
-  vtkVolumeProperty* property, bool labelMapMask, const double derivation[2])
+  vtkVolumeProperty* property, bool labelMapMask, const double derivation[2], const FramePlan& plan)
 {
+  const int c = plan.MaterialComponent;
+  if (plan.Features.Components == scatterer_shader::Features::Scalars::Independent && c != 0)
+  {
+    vtkVolumeProperty* view = this->ComponentView;
+    view->SetScalarOpacity(property->GetScalarOpacity(c));
+    if (property->GetColorChannels(c) == 1)
+    {
+      view->SetColor(property->GetGrayTransferFunction(c));
+    }
+    else
+    {
+      view->SetColor(property->GetRGBTransferFunction(c));
+    }
+    view->SetScalarOpacityUnitDistance(property->GetScalarOpacityUnitDistance(c));
+    return view;
+  }
   if (!labelMapMask)
   {
     return property;
@@ -271,7 +339,7 @@ void FramePlanner::WarnUnassigned(
   vtkVolumeProperty* property, const double range[2], WarnOnce& warn, const FramePlan& plan)
 {
   KeyWriter key;
-  key << plan.Scalars << '|' << plan.Scalars->GetMTime() << '|'
+  key << plan.Scalars << '|' << plan.Scalars->GetMTime() << '|' << plan.MaterialComponent << '|'
       << property->GetScalarOpacity(0)->GetMTime() << '|' << range[0] << ',' << range[1];
   for (const auto& m : plan.Materials.Materials)
   {
@@ -283,8 +351,8 @@ void FramePlanner::WarnUnassigned(
     return;
   }
   this->UnassignedKey.Record(key.Key());
-  const auto unassigned =
-    scatterer_scene::CountUnassigned(plan.Scalars, plan.Materials, property, range);
+  const auto unassigned = scatterer_scene::CountUnassigned(
+    plan.Scalars, plan.Materials, property, range, plan.MaterialComponent);
   if (unassigned.Count > 0)
   {
     std::ostringstream what;
@@ -316,7 +384,10 @@ std::string FramePlanner::PlanFeatures(vtkVolume* vol, const VolumeSource& sourc
   // The thin-part check and template blending belong to the per-sample photon test.
   f.Thin = !f.Transport && f.Shadow && parameters.ThinPartCheck &&
     (!automatic || parameters.LongRangeMultiple > 1.0);
-  f.Bleed = parameters.ColorBleeding && (!automatic || (f.Materials > 1 && colorsDiffer));
+  // Dependent components carry their colour per voxel, not per material: nothing to bleed.
+  f.Bleed = parameters.ColorBleeding &&
+    f.Components != scatterer_shader::Features::Scalars::Dependent &&
+    (!automatic || (f.Materials > 1 && colorsDiffer));
   f.Boundary = parameters.BoundaryRefraction && f.Materials > 1 && (!automatic || indicesDiffer);
   f.Positional = plan.Lights.AnyPositional;
   f.Blend2 = !f.Transport && parameters.TemplateBlending;

@@ -46,6 +46,9 @@ struct FramePlan
   vtkImageData* Image = nullptr;
   vtkDataArray* Scalars = nullptr;
   int CellFlag = 0;
+  /// The component whose scalar selects the materials (0 for one scalar; the opacity's
+  /// component of dependent ones; the first shown of independent ones).
+  int MaterialComponent = 0;
   double Radius = 1.0;    ///< template radius, world units
   float ToTex[3][3] = {}; ///< per-sample mode: texture offset of one radius along world x, y, z
   std::string Declarations, ShadingInit, Shading; ///< this frame's GLSL
@@ -101,9 +104,10 @@ private:
   std::string PlanMaterials(vtkVolume* volume, const VolumeSource& source,
     const IlluminationParameters& parameters, const PlanRequests& requests, WarnOnce& warn,
     FramePlan& plan);
-  /** The volume property materials are derived from (a label-map mask: the union of its labels). */
-  vtkVolumeProperty* MaterialProperty(
-    vtkVolumeProperty* property, bool labelMapMask, const double derivation[2]);
+  /** The volume property materials are derived from (a label-map mask: the union of its
+   * labels; independent components: the material component's functions). */
+  vtkVolumeProperty* MaterialProperty(vtkVolumeProperty* property, bool labelMapMask,
+    const double derivation[2], const FramePlan& plan);
   void WarnUnassigned(
     vtkVolumeProperty* property, const double range[2], WarnOnce& warn, const FramePlan& plan);
   std::string PlanFeatures(vtkVolume* volume, const VolumeSource& source,
@@ -113,6 +117,8 @@ private:
   // gives a scalar), and what it was tabulated from.
   vtkNew<vtkVolumeProperty> LabelUnion;
   ChangeKey LabelUnionKey;
+  // Independent components: the material component's functions as component 0's.
+  vtkNew<vtkVolumeProperty> ComponentView;
   // The data, transfer function and materials last scanned for unassigned voxels.
   ChangeKey UnassignedKey;
 };

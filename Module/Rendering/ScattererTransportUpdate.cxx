@@ -6,6 +6,7 @@
 #include "ScattererWarnOnce.h"
 
 #include "vtkColorTransferFunction.h"
+#include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
@@ -53,6 +54,34 @@ void TabulateMedium(float* row, vtkColorTransferFunction* color, vtkPiecewiseFun
   }
 }
 
+namespace
+{
+using TransportInputs = vtkScattererTransportVolume::Inputs;
+
+// The ScalarOpacityUnitDistance of transfer-function set @p f (1 where unset).
+double UnitDistance(vtkVolumeProperty* property, int f)
+{
+  const double unit = property->GetScalarOpacityUnitDistance(f);
+  return unit > 0.0 ? unit : 1.0;
+}
+
+// How many of the property's transfer-function sets the medium reads: one per
+// independent component, else the first.
+int FunctionCount(const TransportInputs& t)
+{
+  return t.ComponentMode == TransportInputs::Independent ? t.Components : 1;
+}
+
+// One medium row: set @p f's functions over component @p c's range.
+void TabulateRow(float* row, vtkVolumeProperty* property, int f, const float range[2])
+{
+  const bool gray = property->GetColorChannels(f) == 1;
+  TabulateMedium(row, gray ? nullptr : property->GetRGBTransferFunction(f),
+    gray ? property->GetGrayTransferFunction(f) : nullptr, property->GetScalarOpacity(f), range[0],
+    range[1], UnitDistance(property, f));
+}
+}
+
 TransportUpdate::TransportUpdate() = default;
 TransportUpdate::~TransportUpdate() = default;
 
@@ -78,9 +107,17 @@ std::string TransportUpdate::Update(vtkRenderer* ren, vtkVolume* vol, const Fram
   auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
   vtkScattererTransportVolume::Inputs& t = this->Inputs;
   t.Volume = block->TextureObject;
-  // Scale and bias as the ray caster applies them (64-bit types come pre-scaled).
-  t.ScalarScale = volumeTexture->HandleLargeDataTypes ? 1.0f : volumeTexture->Scale[0];
-  t.ScalarBias = volumeTexture->HandleLargeDataTypes ? 0.0f : volumeTexture->Bias[0];
+  this->UpdateComponents(vol, plan);
+  // Scale and bias as the ray caster applies them: none for 64-bit types (they come
+  // pre-scaled) and none for RGBA, whose colour is the texel itself (VTK 9.1's
+  // SetVolumeShaderParameters).
+  const bool raw = volumeTexture->HandleLargeDataTypes ||
+    t.ComponentMode == vtkScattererTransportVolume::Inputs::RGBA;
+  for (int c = 0; c < 4; ++c)
+  {
+    t.ScalarScale[c] = raw ? 1.0f : volumeTexture->Scale[c];
+    t.ScalarBias[c] = raw ? 0.0f : volumeTexture->Bias[c];
+  }
   t.VolumeUploadTime = volumeTexture->UploadTime.GetMTime();
   // A binary mask: masked-out matter neither shows (the ray caster's mask) nor casts
   // shadow or scatters (the transport volume). A label-map mask: each label's medium
@@ -106,23 +143,25 @@ std::string TransportUpdate::Update(vtkRenderer* ren, vtkVolume* vol, const Fram
   }
   this->UpdateGeometry(vol, plan, source, parameters);
 
-  // The medium over the table coordinate (VTK's tables span the scalar range): albedo
-  // from the colour transfer function, extinction from the opacity transfer function.
-  vtkVolumeProperty* property = vol->GetProperty();
-  const double unit = property->GetScalarOpacityUnitDistance(0) > 0.0
-    ? property->GetScalarOpacityUnitDistance(0)
-    : 1.0;
-  const double lo = volumeTexture->ScalarRange[0][0], hi = volumeTexture->ScalarRange[0][1];
-  // The tables change with the transfer functions, the range, the materials, the
+  // The tables change with the transfer functions, the ranges, the materials, the
   // templates and the kernel settings only: rebuilt then, not every frame, and the
   // transport volume is told by TablesVersion.
+  vtkVolumeProperty* property = vol->GetProperty();
   KeyWriter key;
-  const bool gray = property->GetColorChannels(0) == 1;
-  key << property->GetScalarOpacity(0)->GetMTime() << '|'
-      << (gray ? property->GetGrayTransferFunction(0)->GetMTime()
-               : property->GetRGBTransferFunction(0)->GetMTime())
-      << '|' << gray << '|' << lo << ',' << hi << '|' << unit << '|' << templates.GetGenerationKey()
-      << '|' << parameters.PhotonCap << '|' << plan.Radius;
+  key << t.ComponentMode << '|' << t.MaterialComponent;
+  for (int f = 0; f < FunctionCount(t); ++f)
+  {
+    const bool gray = property->GetColorChannels(f) == 1;
+    key << '|' << property->GetScalarOpacity(f)->GetMTime() << ','
+        << (gray ? property->GetGrayTransferFunction(f)->GetMTime()
+                 : property->GetRGBTransferFunction(f)->GetMTime())
+        << ',' << gray << ',' << UnitDistance(property, f);
+  }
+  for (int c = 0; c < t.Components; ++c)
+  {
+    key << '|' << volumeTexture->ScalarRange[c][0] << ',' << volumeTexture->ScalarRange[c][1];
+  }
+  key << '|' << templates.GetGenerationKey() << '|' << parameters.PhotonCap << '|' << plan.Radius;
   // A label-map mask adds one medium row per label: its transfer functions count too.
   key << '|' << plan.Features.LabelMask;
   if (plan.Features.LabelMask)
@@ -145,7 +184,7 @@ std::string TransportUpdate::Update(vtkRenderer* ren, vtkVolume* vol, const Fram
   }
   if (this->Tables.Differs(key.Key()))
   {
-    this->UpdateTables(vol, plan, parameters, templates, lo, hi, unit);
+    this->UpdateTables(vol, plan, parameters, templates, volumeTexture->ScalarRange);
     this->Tables.Record(key.Key());
     ++t.TablesVersion;
   }
@@ -184,6 +223,29 @@ std::string TransportUpdate::Update(vtkRenderer* ren, vtkVolume* vol, const Fram
     return "the light transport volume could not be built";
   }
   return "";
+}
+
+void TransportUpdate::UpdateComponents(vtkVolume* vol, const FramePlan& plan)
+{
+  using Scalars = scatterer_shader::Features::Scalars;
+  TransportInputs& t = this->Inputs;
+  t.Components = plan.Scalars->GetNumberOfComponents();
+  t.MaterialComponent = plan.MaterialComponent;
+  switch (plan.Features.Components)
+  {
+    case Scalars::Independent:
+      t.ComponentMode = TransportInputs::Independent;
+      break;
+    case Scalars::Dependent:
+      t.ComponentMode = t.Components == 2 ? TransportInputs::LuminanceAlpha : TransportInputs::RGBA;
+      break;
+    default:
+      t.ComponentMode = TransportInputs::OneScalar;
+  }
+  for (int c = 0; c < 4; ++c)
+  {
+    t.ComponentWeights[c] = static_cast<float>(vol->GetProperty()->GetComponentWeight(c));
+  }
 }
 
 void TransportUpdate::UpdateGeometry(vtkVolume* vol, const FramePlan& plan,
@@ -291,23 +353,45 @@ void TransportUpdate::UpdateLights(
 }
 
 void TransportUpdate::UpdateTables(vtkVolume* vol, const FramePlan& plan,
-  const IlluminationParameters& parameters, const TemplateCache& templates, double lo, double hi,
-  double unit)
+  const IlluminationParameters& parameters, const TemplateCache& templates,
+  const float ranges[4][2])
 {
-  vtkScattererTransportVolume::Inputs& t = this->Inputs;
+  TransportInputs& t = this->Inputs;
   vtkVolumeProperty* property = vol->GetProperty();
-  const bool gray = property->GetColorChannels(0) == 1;
-  t.Medium.resize(4 * kMediumTableSize);
-  TabulateMedium(t.Medium.data(), gray ? nullptr : property->GetRGBTransferFunction(0),
-    gray ? property->GetGrayTransferFunction(0) : nullptr, property->GetScalarOpacity(0), lo, hi,
-    unit);
+  // The medium over the table coordinate (VTK's tables span each component's range):
+  // albedo from the colour transfer function, extinction from the opacity transfer
+  // function, one row per rule (Inputs::ComponentRule).
+  const auto row = [&t](int r)
+  { return t.Medium.data() + static_cast<size_t>(4) * kMediumTableSize * r; };
+  t.MediumRows = t.ComponentMode == TransportInputs::Independent ? t.Components
+    : t.ComponentMode == TransportInputs::LuminanceAlpha         ? 2
+    : plan.Features.LabelMask                                    ? 256
+                                                                 : 1;
+  t.Medium.assign(static_cast<size_t>(4) * kMediumTableSize * t.MediumRows, 0.0f);
+  switch (t.ComponentMode)
+  {
+    case TransportInputs::Independent:
+      for (int c = 0; c < t.Components; ++c)
+      {
+        TabulateRow(row(c), property, c, ranges[c]);
+      }
+      break;
+    case TransportInputs::LuminanceAlpha: // colour over the luminance, opacity over the alpha
+      TabulateRow(row(0), property, 0, ranges[0]);
+      TabulateRow(row(1), property, 0, ranges[1]);
+      break;
+    case TransportInputs::RGBA: // opacity over the alpha (the colour is the data's)
+      TabulateRow(row(0), property, 0, ranges[3]);
+      break;
+    default:
+      TabulateRow(row(0), property, 0, ranges[0]);
+  }
+  const double lo = ranges[t.MaterialComponent][0], hi = ranges[t.MaterialComponent][1];
+  const double unit = UnitDistance(property, FunctionCount(t) > 1 ? t.MaterialComponent : 0);
   // A label-map mask: row L holds label L's colour and opacity functions (rows 1..255;
   // a label without functions is empty, as VTK's label table leaves it).
-  t.MediumRows = 1;
   if (plan.Features.LabelMask)
   {
-    t.MediumRows = 256;
-    t.Medium.resize(static_cast<size_t>(4) * kMediumTableSize * t.MediumRows, 0.0f);
     for (int label : property->GetLabelMapLabels())
     {
       vtkPiecewiseFunction* labelOpacity = property->GetLabelScalarOpacity(label);
@@ -315,8 +399,8 @@ void TransportUpdate::UpdateTables(vtkVolume* vol, const FramePlan& plan,
       {
         continue;
       }
-      TabulateMedium(t.Medium.data() + static_cast<size_t>(4) * kMediumTableSize * label,
-        property->GetLabelColor(label), nullptr, labelOpacity, lo, hi, unit);
+      TabulateMedium(
+        row(label), property->GetLabelColor(label), nullptr, labelOpacity, lo, hi, unit);
     }
   }
   const double tableRange[2] = { lo, hi };

@@ -101,10 +101,12 @@ private:
     const IlluminationParameters& parameters);
   /** The plan's lights; with an exchange made for them, the depth in front of the piece. */
   void UpdateLights(const FramePlan& plan, const TransportSource& source, WarnOnce& warn);
-  /** The medium, material and kernel tables, over the volume texture's scalar range. */
+  /** How the medium comes from the volume's components (the plan's rule). */
+  void UpdateComponents(vtkVolume* volume, const FramePlan& plan);
+  /** The medium, material and kernel tables, over the volume texture's scalar ranges. */
   void UpdateTables(vtkVolume* volume, const FramePlan& plan,
-    const IlluminationParameters& parameters, const TemplateCache& templates, double lo, double hi,
-    double unit);
+    const IlluminationParameters& parameters, const TemplateCache& templates,
+    const float ranges[4][2]);
 
   // The light transport volume (owns its textures and build key).
   vtkNew<vtkScattererTransportVolume> Transport;

@@ -26,21 +26,6 @@ double TemplateOpacity(double alphaUnit)
   return std::isfinite(alphaUnit) ? std::min(std::max(alphaUnit, 0.0), 1.0) : 1.0;
 }
 
-double MaxOpacity(vtkPiecewiseFunction* opacity, double lo, double hi)
-{
-  double best = std::max(opacity->GetValue(lo), opacity->GetValue(hi));
-  for (int i = 0; i < opacity->GetSize(); ++i)
-  {
-    double node[4];
-    opacity->GetNodeValue(i, node);
-    if (node[0] >= lo && node[0] <= hi)
-    {
-      best = std::max(best, node[1]);
-    }
-  }
-  return best;
-}
-
 float Normalize(double value, const double range[2])
 {
   const double span = range[1] - range[0];
@@ -60,6 +45,21 @@ SceneMaterial Make(double lo, double hi, double alphaUnit, double n, const doubl
   m.Range[1] = Normalize(hi, dataRange);
   return m;
 }
+}
+
+double MaxOpacity(vtkPiecewiseFunction* opacity, double lo, double hi)
+{
+  double best = std::max(opacity->GetValue(lo), opacity->GetValue(hi));
+  for (int i = 0; i < opacity->GetSize(); ++i)
+  {
+    double node[4];
+    opacity->GetNodeValue(i, node);
+    if (node[0] >= lo && node[0] <= hi)
+    {
+      best = std::max(best, node[1]);
+    }
+  }
+  return best;
 }
 
 MaterialSet BuildMaterials(const std::vector<RequestedMaterial>& requested,
@@ -208,7 +208,7 @@ std::vector<float> MaterialTable(const MaterialSet& set, const double range[2], 
 }
 
 Unassigned CountUnassigned(vtkDataArray* scalars, const MaterialSet& set,
-  vtkVolumeProperty* property, const double dataRange[2])
+  vtkVolumeProperty* property, const double dataRange[2], int component)
 {
   Unassigned result;
   vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
@@ -222,7 +222,7 @@ Unassigned CountUnassigned(vtkDataArray* scalars, const MaterialSet& set,
   const vtkIdType n = scalars->GetNumberOfTuples();
   for (vtkIdType i = 0; i < n; ++i)
   {
-    const double v = scalars->GetComponent(i, 0);
+    const double v = scalars->GetComponent(i, component);
     if (!std::isfinite(v))
     {
       continue;

@@ -15,6 +15,7 @@
 #include <vector>
 
 class vtkDataArray;
+class vtkPiecewiseFunction;
 class vtkVolumeProperty;
 
 namespace scatterer_scene
@@ -72,12 +73,15 @@ struct Unassigned
 };
 
 /**
- * Scans @p scalars (first component) for visible values that none of @p set's
+ * Scans @p scalars (component @p component) for visible values that none of @p set's
  * materials selects; visibility from @p property's opacity transfer function,
  * tabulated over @p dataRange. Read-only: no copy of the volume is made.
  */
 Unassigned CountUnassigned(vtkDataArray* scalars, const MaterialSet& set,
-  vtkVolumeProperty* property, const double dataRange[2]);
+  vtkVolumeProperty* property, const double dataRange[2], int component);
+
+/** The largest value of @p opacity over [lo, hi] (its ends and the nodes between). */
+double MaxOpacity(vtkPiecewiseFunction* opacity, double lo, double hi);
 
 /** Speed ratios n_m / n_k (row m = sample material) for the shader, row-major. */
 std::vector<float> SpeedRatios(const MaterialSet& set);

@@ -18,7 +18,8 @@ bool Features::operator==(const Features& o) const
   return this->Lights == o.Lights && this->Materials == o.Materials && this->Shadow == o.Shadow &&
     this->Thin == o.Thin && this->Bleed == o.Bleed && this->Boundary == o.Boundary &&
     this->Positional == o.Positional && this->Blend2 == o.Blend2 && this->Phong == o.Phong &&
-    this->Transport == o.Transport && this->LabelMask == o.LabelMask;
+    this->Transport == o.Transport && this->LabelMask == o.LabelMask &&
+    this->Components == o.Components;
 }
 
 std::string Features::Describe() const
@@ -28,7 +29,9 @@ std::string Features::Describe() const
       << " materials=" << this->Materials;
   const std::pair<bool, const char*> names[] = { { this->Shadow, "shadow" }, { this->Thin, "thin" },
     { this->Bleed, "bleed" }, { this->Boundary, "boundary" }, { this->Positional, "positional" },
-    { this->Blend2, "blend2" }, { this->Phong, "phong" }, { this->LabelMask, "labelmask" } };
+    { this->Blend2, "blend2" }, { this->Phong, "phong" }, { this->LabelMask, "labelmask" },
+    { this->Components == Scalars::Independent, "independent" },
+    { this->Components == Scalars::Dependent, "dependent" } };
   for (const auto& n : names)
   {
     if (n.first)
@@ -110,7 +113,9 @@ std::map<std::string, bool> Flags(const Features& f)
     { "BOUNDARY", f.Boundary && f.Materials > 1 }, { "POSITIONAL", f.Positional },
     { "BLEND2", f.Blend2 }, { "PHONG", f.Phong },
     { "FETCH", f.Shadow || f.Bleed || (f.Boundary && f.Materials > 1) },
-    { "TRANSPORT", f.Transport }, { "PERSAMPLE", !f.Transport }, { "LABELMASK", f.LabelMask } };
+    { "TRANSPORT", f.Transport }, { "PERSAMPLE", !f.Transport }, { "LABELMASK", f.LabelMask },
+    { "INDEPENDENT", f.Components == Features::Scalars::Independent },
+    { "DEPENDENT", f.Components == Features::Scalars::Dependent } };
 }
 
 // Limits, not the scene's counts, except the light slots (scatterer_illumination_dec.glsl).

@@ -29,6 +29,16 @@ struct SCATTERERTEMPLATE_EXPORT Features
   bool Phong = false;      ///< keep VTK's gradient shading, darkened by the visibility
   bool Transport = true;  ///< read the light transport volume instead of the per-sample photon loop
   bool LabelMask = false; ///< colour from VTK's label-map mask (its per-label transfer functions)
+  /// How the volume's components give colour and opacity, as VTK composites them: one
+  /// scalar, independent components (each with its own transfer functions, mixed by the
+  /// component weights), or dependent ones (luminance + alpha, RGBA).
+  enum class Scalars
+  {
+    One,
+    Independent,
+    Dependent
+  };
+  Scalars Components = Scalars::One;
 
   bool operator==(const Features& o) const;
   bool operator!=(const Features& o) const { return !(*this == o); }

@@ -5,8 +5,42 @@
     if (!g_skip)
       {
       vec4 scalar = texture3D(in_volume[0], g_dataPos);
+//ST::IF INDEPENDENT
+      // Independent components, composited as VTK 9.1 does (vtkVolumeShaderComposer's
+      // shading): each component's own opacity and colour (with VTK's gradient shading
+      // per component when Shade is on), mixed by the component weights into one
+      // premultiplied colour with opacity sum(alpha_c^2) / sum(w_c alpha_c). The mix is
+      // then lit below, as one sample.
+      scalar = scalar * in_volume_scale[0] + in_volume_bias[0];
+      vec4 st_parts[4];
+      float st_total = 0.0;
+      for (int i = 0; i < in_noOfComponents; ++i)
+        {
+        st_parts[i][3] = computeOpacity(scalar, i);
+        st_parts[i] = computeColor(scalar, st_parts[i][3], i);
+        st_total += st_parts[i][3] * in_componentWeight[i];
+        }
+      g_srcColor = vec4(0.0);
+      for (int i = 0; i < in_noOfComponents && st_total > 0.0; ++i)
+        {
+        if (in_componentWeight[i] <= 0.0)
+          {
+          continue;
+          }
+        g_srcColor.rgb += st_parts[i].rgb * st_parts[i].a * in_componentWeight[i];
+        g_srcColor.a += st_parts[i].a * st_parts[i].a / st_total;
+        }
+      if (g_srcColor.a > 0.0)
+        {
+//ST::ELSE
+//ST::IF DEPENDENT
+      // Dependent components (luminance + alpha, RGBA): VTK's computeOpacity and
+      // computeColor read the whole vector.
+      scalar = scalar * in_volume_scale[0] + in_volume_bias[0];
+//ST::ELSE
       scalar.r = scalar.r * in_volume_scale[0].r + in_volume_bias[0].r;
       scalar = vec4(scalar.r);
+//ST::ENDIF
 //ST::IF LABELMASK
       // VTK 9.1's label-map mask (vtkVolumeShaderComposer, CompositeMaskImplementation):
       // label 0, or a blend factor of 0, takes the volume's own transfer functions; any
@@ -34,6 +68,7 @@
       if (g_srcColor.a > 0.0)
         {
         g_srcColor = computeColor(scalar, g_srcColor.a);
+//ST::ENDIF
 //ST::ENDIF
 //ST::IF PERSAMPLE
         int st_m = st_material(scalar.r);
@@ -65,14 +100,27 @@
 //ST::ENDIF
         if (st_m >= 0)
           {
+//ST::IF INDEPENDENT
+          // The mix is premultiplied (and may exceed its opacity where components
+          // overlap, as in VTK): the light scales it as it would scale each component.
+//ST::IF PHONG
+          g_srcColor.rgb = max(g_srcColor.rgb * st_F * st_unlitNorm, 0.0);
+//ST::ELSE
+          g_srcColor.rgb = max(g_srcColor.rgb * st_F, 0.0);
+//ST::ENDIF
+//ST::ELSE
 //ST::IF PHONG
           // VTK's gradient shading stays; the template visibility darkens it.
           g_srcColor.rgb = clamp((g_srcColor.rgb * st_F + st_B) * st_unlitNorm, 0.0, 1.0);
 //ST::ELSE
           g_srcColor.rgb = clamp(g_srcColor.rgb * st_F + st_B, 0.0, 1.0);
 //ST::ENDIF
+//ST::ENDIF
           }
+//ST::IF INDEPENDENT
+//ST::ELSE
         g_srcColor.rgb *= g_srcColor.a;
+//ST::ENDIF
         g_fragColor = (1.0f - g_fragColor.a) * g_srcColor + g_fragColor;
         }
       }

@@ -48,8 +48,12 @@ std::uint64_t TransportKey(const vtkScattererTransportVolume::Inputs& in)
   f.Add(in.LabelMask);
   f.Add(in.MaskBlend);
   f.Add(in.MediumRows);
-  f.Add(in.ScalarScale);
-  f.Add(in.ScalarBias);
+  f.Add(in.ScalarScale, 4);
+  f.Add(in.ScalarBias, 4);
+  f.Add(in.ComponentMode);
+  f.Add(in.Components);
+  f.Add(in.MaterialComponent);
+  f.Add(in.ComponentWeights, 4);
   f.Add(in.OcclusionScale);
   f.Add(in.Downsample);
   f.Add(in.IndexOrigin, 3);

@@ -93,8 +93,12 @@ vtkShaderProgram* UseProgram(vtkOpenGLRenderWindow* window, vtkOpenGLQuadHelper*
 void SetCommonUniforms(vtkShaderProgram* program, const TransportGrid& grid,
   const vtkScattererTransportVolume::Inputs& in)
 {
-  program->SetUniformf("st_scalarScale", in.ScalarScale);
-  program->SetUniformf("st_scalarBias", in.ScalarBias);
+  program->SetUniform4f("st_scalarScale", in.ScalarScale);
+  program->SetUniform4f("st_scalarBias", in.ScalarBias);
+  program->SetUniformi("st_componentMode", in.ComponentMode);
+  program->SetUniformi("st_components", in.Components);
+  program->SetUniformi("st_materialComponent", in.MaterialComponent);
+  program->SetUniform4f("st_componentWeights", in.ComponentWeights);
   program->SetUniformf("st_occlusionScale", in.OcclusionScale);
   float dims[3];
   grid.GetDims(dims);

@@ -11,9 +11,13 @@
 // The per-light transmittance texture st_transmittance is stored with the sweep
 // axis last: st_toSweep maps a grid position to its (row, column, slice).
 //============================================================================
-uniform sampler3D st_volume;       // the mapper's own scalar texture
-uniform float st_scalarScale;      // normalised scalar = texel * scale + bias
-uniform float st_scalarBias;
+uniform sampler3D st_volume;       // the mapper's own scalar texture (1-4 components)
+uniform vec4 st_scalarScale;       // normalised scalar = texel * scale + bias, per component
+uniform vec4 st_scalarBias;
+uniform int st_componentMode;      // how the components make the medium (ST_ONE_SCALAR ...)
+uniform int st_components;         // components of st_volume
+uniform int st_materialComponent;  // the component the material table is over
+uniform vec4 st_componentWeights;  // independent components: vtkVolumeProperty's weights
 uniform sampler2D st_medium;       // over the normalised scalar: rgb albedo (colour), a sigma_t per world unit
 uniform float st_occlusionScale;  // OcclusionStrength: scales the attenuation along light paths only
 uniform vec3 st_gridDims;
@@ -34,15 +38,27 @@ uniform sampler3D st_mask;         // the mask (nearest, 8-bit): binary 0 = mask
 uniform float st_maskBlend;        // label-map mask: VTK's MaskBlendFactor
 uniform float st_mediumRows;       // rows of st_medium (1, or 256 with a label-map mask)
 
+// The component rules (vtkScattererTransportVolume::Inputs::ComponentRule).
+const int ST_ONE_SCALAR = 0;
+const int ST_INDEPENDENT = 1;
+const int ST_LUMINANCE_ALPHA = 2;
+const int ST_RGBA = 3;
+
 vec3 st_gridToTexture(vec3 j)
 {
   return j * st_gridToTex + st_gridToTexOffset;
 }
 
-// Normalised scalar (the transfer-function table coordinate) at a texture position.
+// Normalised scalars (the transfer-function table coordinates) at a texture position.
+vec4 st_scalarsAt(vec3 t)
+{
+  return clamp(texture(st_volume, t) * st_scalarScale + st_scalarBias, 0.0, 1.0);
+}
+
+// The normalised scalar that selects the material (the material table's coordinate).
 float st_scalarAt(vec3 t)
 {
-  return texture(st_volume, t).r * st_scalarScale + st_scalarBias;
+  return st_scalarsAt(t)[st_materialComponent];
 }
 
 // Is the material at texture position t kept by the binary mask, the clipping
@@ -74,6 +90,56 @@ bool st_kept(vec3 t)
   return true;
 }
 
+// Row `row` of the medium table at normalised scalar s.
+vec4 st_mediumRow(float s, float row)
+{
+  return texture(st_medium, vec2(s, (row + 0.5) / st_mediumRows));
+}
+
+// The medium of several components at their normalised scalars s, as VTK's ray caster
+// makes colour and opacity of them (vtkVolumeShaderComposer, 9.1).
+vec4 st_componentsMedium(vec4 s)
+{
+  if (st_componentMode == ST_LUMINANCE_ALPHA)
+  {
+    return vec4(st_mediumRow(s.x, 0.0).rgb, st_mediumRow(s.y, 1.0).a);
+  }
+  if (st_componentMode == ST_RGBA)
+  {
+    return vec4(s.rgb, st_mediumRow(s.w, 0.0).a);
+  }
+  // Independent components: VTK composites a step with opacity
+  //   A = sum_c alpha_c^2 / sum_c w_c alpha_c   (numerator over components with w_c > 0)
+  // and premultiplied colour sum_c w_c alpha_c rgb_c. Over a short step d,
+  // alpha_c = sigma_c d, so the mix is a medium with
+  //   sigma_t = sum_c sigma_c^2 / sum_c w_c sigma_c,
+  //   albedo  = sum_c w_c sigma_c rgb_c / sigma_t   (clamped to 1 where components overlap),
+  // which is one component's own medium where the others are empty.
+  float total = 0.0, squares = 0.0;
+  vec3 colour = vec3(0.0);
+  for (int c = 0; c < 4; ++c)
+  {
+    if (c >= st_components)
+    {
+      break;
+    }
+    vec4 m = st_mediumRow(s[c], float(c));
+    float w = st_componentWeights[c];
+    total += w * m.a;
+    if (w > 0.0)
+    {
+      squares += m.a * m.a;
+      colour += w * m.a * m.rgb;
+    }
+  }
+  if (!(total > 0.0) || !(squares > 0.0))
+  {
+    return vec4(0.0);
+  }
+  float sigma = squares / total;
+  return vec4(clamp(colour / sigma, 0.0, 1.0), sigma);
+}
+
 // The medium at a texture position: rgb = albedo (the colour transfer function),
 // a = extinction coefficient sigma_t per world unit in VTK's convention
 // sigma_t = -ln(1 - alpha) / ScalarOpacityUnitDistance, tabulated on the CPU from
@@ -85,8 +151,12 @@ vec4 st_mediumAt(vec3 t)
   {
     return vec4(0.0);
   }
-  float s = clamp(st_scalarAt(t), 0.0, 1.0);
-  vec4 own = texture(st_medium, vec2(s, 0.5 / st_mediumRows));
+  if (st_componentMode != ST_ONE_SCALAR)
+  {
+    return st_componentsMedium(st_scalarsAt(t));
+  }
+  float s = st_scalarAt(t);
+  vec4 own = st_mediumRow(s, 0.0);
   if (st_labelMasked != 0)
   {
     // Row = the label value (0: the volume's own transfer functions), mixed with row 0
@@ -94,7 +164,7 @@ vec4 st_mediumAt(vec3 t)
     float label = floor(texture(st_mask, t).r * 255.0 + 0.5);
     if (label > 0.0)
     {
-      return mix(own, texture(st_medium, vec2(s, (label + 0.5) / st_mediumRows)), st_maskBlend);
+      return mix(own, st_mediumRow(s, label), st_maskBlend);
     }
   }
   return own;

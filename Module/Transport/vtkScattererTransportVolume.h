@@ -87,9 +87,27 @@ public:
   /** Everything one build needs; filled by the mapper every frame. */
   struct Inputs
   {
-    vtkTextureObject* Volume = nullptr;    ///< the ray caster's scalar texture (3D)
-    float ScalarScale = 1, ScalarBias = 0; ///< texel -> normalised scalar
-    unsigned long VolumeUploadTime = 0;    ///< changes when the texture's content does
+    vtkTextureObject* Volume = nullptr; ///< the ray caster's scalar texture (3D)
+    /// texel -> normalised scalar, per component (the ray caster's in_volume_scale, _bias)
+    float ScalarScale[4] = { 1, 1, 1, 1 }, ScalarBias[4] = { 0, 0, 0, 0 };
+    /// How the medium comes from the components, as VTK's ray caster composites them
+    /// (the values of ST_ONE_SCALAR ... in scatterer_transport_common.glsl):
+    /// - OneScalar: row 0 of Medium (or a label's row) at the scalar;
+    /// - Independent: row c at component c, mixed by ComponentWeights;
+    /// - LuminanceAlpha: albedo from row 0 at component 0, sigma_t from row 1 at component 1;
+    /// - RGBA: albedo = the rgb components, sigma_t from row 0 at component 3.
+    enum ComponentRule
+    {
+      OneScalar = 0,
+      Independent = 1,
+      LuminanceAlpha = 2,
+      RGBA = 3
+    };
+    int ComponentMode = OneScalar;
+    int Components = 1;                         ///< components of the volume texture (1-4)
+    int MaterialComponent = 0;                  ///< the component MaterialTable is over
+    float ComponentWeights[4] = { 1, 1, 1, 1 }; ///< vtkVolumeProperty's component weights
+    unsigned long VolumeUploadTime = 0;         ///< changes when the texture's content does
     /// A binary mask on the volume's grid (R, nearest; VTK's convention: a voxel whose
     /// mask value is 0 is masked out), or none. Masked-out matter neither shows (the ray
     /// caster's own mask) nor casts shadow or scatters light (here).

@@ -215,27 +215,30 @@ TEST(MapperBehaviour, OtherBlendModesRenderAsStockWithOneWarning)
   EXPECT_EQ(MaxDifference(first, scene.RenderStock()), 0);
 }
 
-TEST(MapperBehaviour, MultiComponentDataRendersAsStockWithOneWarning)
+TEST(MapperBehaviour, MultiComponentDataInPerSampleModeRendersAsStockWithOneWarning)
 {
+  // The per-sample photon test reads one scalar; the transport mode lights components.
   Scene scene;
-  auto rgba = vtkSmartPointer<vtkImageData>::New();
-  rgba->SetDimensions(N, N, N);
-  rgba->AllocateScalars(VTK_UNSIGNED_CHAR, 2);
-  auto* p = static_cast<unsigned char*>(rgba->GetScalarPointer());
+  auto la = vtkSmartPointer<vtkImageData>::New();
+  la->SetDimensions(N, N, N);
+  la->AllocateScalars(VTK_UNSIGNED_CHAR, 2);
+  auto* p = static_cast<unsigned char*>(la->GetScalarPointer());
   auto* s = static_cast<unsigned char*>(scene.Image->GetScalarPointer());
   for (int i = 0; i < N * N * N; ++i)
   {
-    p[2 * i] = s[i];
-    p[2 * i + 1] = static_cast<unsigned char>(255 - s[i]);
+    p[2 * i] = static_cast<unsigned char>(255 - s[i]);
+    p[2 * i + 1] = s[i];
   }
-  scene.Mapper->SetInputData(rgba);
-  scene.Stock->SetInputData(rgba);
+  scene.Property->SetIndependentComponents(false);
+  scene.Mapper->SetInputData(la);
+  scene.Stock->SetInputData(la);
+  scene.Mapper->SetIlluminationMode(vtkScattererTemplateVolumeMapper::PER_SAMPLE);
   vtkNew<vtkTest::ErrorObserver> warnings;
   scene.Mapper->AddObserver(vtkCommand::WarningEvent, warnings);
   const auto first = scene.Render();
   scene.Render();
   EXPECT_EQ(WarningCount(warnings), 1u);
-  EXPECT_NE(LastWarning(warnings).find("components"), std::string::npos) << LastWarning(warnings);
+  EXPECT_NE(LastWarning(warnings).find("per-sample"), std::string::npos) << LastWarning(warnings);
   EXPECT_EQ(MaxDifference(first, scene.RenderStock()), 0);
 }
 

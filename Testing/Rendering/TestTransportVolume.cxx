@@ -25,6 +25,7 @@
 
 #include <cmath>
 #include <functional>
+#include <string>
 
 namespace
 {
@@ -41,6 +42,22 @@ vtkSmartPointer<vtkImageData> MakeVolume(int n, double spacing, const Filler& fi
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i)
         *p++ = fill(i, j, k);
+  return image;
+}
+
+// A volume of `components` components; component c of voxel (i, j, k) is fill(i, j, k, c).
+vtkSmartPointer<vtkImageData> MakeComponents(
+  int n, int components, const std::function<unsigned char(int, int, int, int)>& fill)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(n, n, n);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, components);
+  auto* p = static_cast<unsigned char*>(image->GetScalarPointer());
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+        for (int c = 0; c < components; ++c)
+          *p++ = fill(i, j, k, c);
   return image;
 }
 
@@ -78,6 +95,17 @@ struct TransportScene
     this->Light->SetLightTypeToSceneLight();
     this->Renderer->AddLight(this->Light);
     this->Renderer->ResetCamera();
+  }
+
+  // Independent components: each one gets component 0's opacity function.
+  void SetIndependentComponents()
+  {
+    this->Property->SetIndependentComponents(true);
+    for (int c = 1; c < 4; ++c)
+    {
+      this->Property->SetScalarOpacity(c, this->Property->GetScalarOpacity(0));
+      this->Property->SetScalarOpacityUnitDistance(c, 1.0);
+    }
   }
 
   void SetDirectional(double x, double y, double z)
@@ -130,6 +158,89 @@ TEST(TransportVolume, SlabAxisAlignedLightIsBeerLambert)
     EXPECT_NEAR(scene.At(t, 16, 16, k), expected, 0.01 * expected + 1e-3) << "k = " << k;
   }
   EXPECT_NEAR(scene.At(t, 16, 16, 28), 1.0, 1e-3) << "above the slab the light is unattenuated";
+}
+
+// The slab z in [8, 23] and, in every component, a floor z <= 4 that keeps something
+// visible (else the volume renders as stock and there is no transport volume).
+bool InSlab(int k)
+{
+  return k >= 8 && k <= 23;
+}
+bool InFloor(int k)
+{
+  return k <= 4;
+}
+
+// Between the floor and a 16-voxel slab of opacity 0.1 per unit, lit from +z:
+// Beer-Lambert's value, or no shadow.
+void ExpectSlabShadow(TransportScene& scene, bool shadow, const char* what)
+{
+  const auto t = scene.Transmittance();
+  ASSERT_EQ(t.size(), static_cast<size_t>(scene.N * scene.N * scene.N)) << what;
+  const double expected = shadow ? std::pow(1.0 - 0.1, 16.0) : 1.0;
+  EXPECT_NEAR(scene.At(t, 16, 16, 6), expected, 0.01 * expected + 1e-3) << what;
+}
+
+TEST(TransportVolume, IndependentComponentsAttenuateAsVtkCompositesThem)
+{
+  const int n = 32;
+  // Component 1 holds the slab z in [8, 23]; component 0 holds it too where `both`.
+  for (int variant = 0; variant < 4; ++variant)
+  {
+    const bool both = variant == 1;
+    auto image = MakeComponents(n, 2,
+      [both](int, int, int k, int c) -> unsigned char
+      { return ((c == 1 || both) && InSlab(k)) || InFloor(k) ? 200 : 0; });
+    TransportScene scene(image, 0.1);
+    scene.SetIndependentComponents();
+    scene.SetDirectional(0, 0, 1);
+    if (variant == 2)
+    {
+      scene.Property->SetComponentWeight(1, 0.0); // hidden: VTK shows nothing of it
+    }
+    if (variant == 3)
+    {
+      vtkNew<vtkPiecewiseFunction> none; // transparent: nothing there
+      none->AddPoint(0, 0.0);
+      none->AddPoint(255, 0.0);
+      scene.Property->SetScalarOpacity(1, none);
+    }
+    // Two equal components composite in VTK to one component's opacity
+    // (sum alpha^2 / sum alpha), not to their sum: the light sees what the picture does.
+    const char* const what[] = { "one component", "two equal components", "a component of weight 0",
+      "a component with zero opacity" };
+    ExpectSlabShadow(scene, variant < 2, what[variant]);
+  }
+}
+
+TEST(TransportVolume, DependentComponentsTakeOpacityFromTheirLastComponent)
+{
+  const int n = 32;
+  for (int components : { 2, 4 })
+  {
+    // The slab in the last (opacity) component, or in the others only.
+    for (bool inOpacity : { true, false })
+    {
+      auto image = MakeComponents(n, components,
+        [=](int i, int j, int k, int c) -> unsigned char
+        {
+          // One corner voxel of 255 makes every component's range [0, 255]: VTK reads
+          // RGBA's opacity table (over the range) at the raw texel value / 255.
+          if (i == 0 && j == 0 && k == n - 1)
+          {
+            return 255;
+          }
+          const bool last = c == components - 1;
+          return (InSlab(k) && last == inOpacity) || InFloor(k) ? 200 : 0;
+        });
+      TransportScene scene(image, 0.1);
+      scene.Property->SetIndependentComponents(false);
+      scene.SetDirectional(0, 0, 1);
+      const std::string what = std::to_string(components) + " dependent components, slab " +
+        (inOpacity ? "in the opacity component" : "in the colour components only");
+      ExpectSlabShadow(scene, inOpacity, what.c_str());
+    }
+  }
 }
 
 TEST(TransportVolume, SlabObliqueLightIsBeerLambert)
