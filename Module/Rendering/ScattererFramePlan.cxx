@@ -1,6 +1,7 @@
 #include "ScattererFramePlan.h"
 
 #include "ScattererIlluminationParameters.h"
+#include "ScattererTransfer2D.h"
 #include "ScattererWarnOnce.h"
 
 #include "vtkAbstractMapper.h"
@@ -73,10 +74,6 @@ std::string Unsupported(
   {
     return "the depth pass (UseDepthPass)";
   }
-  if (vol->GetProperty()->GetTransferFunctionMode() != vtkVolumeProperty::TF_1D)
-  {
-    return "2D transfer functions";
-  }
   return "";
 }
 
@@ -89,6 +86,29 @@ std::string PlanComponents(vtkVolumeProperty* property, const VolumeSource& sour
   const int n = plan.Scalars->GetNumberOfComponents();
   plan.Features.Components = Scalars::One;
   plan.MaterialComponent = 0;
+  plan.SampleDistance = source.SampleDistance;
+  plan.Transfer2D = property->GetTransferFunctionMode() == vtkVolumeProperty::TF_2D;
+  if (plan.Transfer2D)
+  {
+    if (n != 1)
+    {
+      return "2D transfer functions on multi-component scalars";
+    }
+    if (!parameters.Transport())
+    {
+      return "2D transfer functions in per-sample mode (the transport mode lights them)";
+    }
+    if (source.Mask && source.LabelMapMask)
+    {
+      return "a label-map mask with a 2D transfer function";
+    }
+    if (!(source.SampleDistance > 0.0) || !std::isfinite(source.SampleDistance))
+    {
+      return "a 2D transfer function with a sample distance that is not positive";
+    }
+    const std::string problem = Transfer2DProblem(property->GetTransferFunction2D());
+    return problem.empty() ? "" : "this 2D transfer function (" + problem + ")";
+  }
   if (n == 1)
   {
     return "";
@@ -279,9 +299,32 @@ vtkVolumeProperty* FramePlanner::MaterialProperty(
   vtkVolumeProperty* property, bool labelMapMask, const double derivation[2], const FramePlan& plan)
 {
   const int c = plan.MaterialComponent;
+  if (plan.Transfer2D)
+  {
+    vtkImageData* table = property->GetTransferFunction2D();
+    const double unit = property->GetScalarOpacityUnitDistance() > 0.0
+      ? property->GetScalarOpacityUnitDistance()
+      : 1.0;
+    KeyWriter key;
+    key << table << '|' << table->GetMTime() << '|' << derivation[0] << ',' << derivation[1] << '|'
+        << plan.SampleDistance << '|' << unit;
+    if (this->Transfer2DKey.Differs(key.Key()))
+    {
+      vtkNew<vtkPiecewiseFunction> opacity;
+      vtkNew<vtkColorTransferFunction> color;
+      Transfer2DVisibility(
+        table, derivation[0], derivation[1], plan.SampleDistance, unit, opacity, color);
+      this->ComponentView->SetScalarOpacity(opacity);
+      this->ComponentView->SetColor(color);
+      this->ComponentView->SetScalarOpacityUnitDistance(unit);
+      this->Transfer2DKey.Record(key.Key());
+    }
+    return this->ComponentView;
+  }
   if (plan.Features.Components == scatterer_shader::Features::Scalars::Independent && c != 0)
   {
     vtkVolumeProperty* view = this->ComponentView;
+    this->Transfer2DKey.Clear();
     view->SetScalarOpacity(property->GetScalarOpacity(c));
     if (property->GetColorChannels(c) == 1)
     {

@@ -49,7 +49,11 @@ struct FramePlan
   /// The component whose scalar selects the materials (0 for one scalar; the opacity's
   /// component of dependent ones; the first shown of independent ones).
   int MaterialComponent = 0;
-  double Radius = 1.0;    ///< template radius, world units
+  /// A 2D transfer function (over the scalar and its gradient magnitude) gives colour and
+  /// opacity, one ray step of SampleDistance at a time (ScattererTransfer2D.h).
+  bool Transfer2D = false;
+  double SampleDistance = 1.0; ///< the ray caster's step, world units
+  double Radius = 1.0;         ///< template radius, world units
   float ToTex[3][3] = {}; ///< per-sample mode: texture offset of one radius along world x, y, z
   std::string Declarations, ShadingInit, Shading; ///< this frame's GLSL
 
@@ -65,6 +69,7 @@ struct VolumeSource
   bool LabelMapMask = false; ///< Mask is a label map (VTK's LabelMapMaskType)
   int BlendMode = 0;
   bool UseDepthPass = false;
+  double SampleDistance = 1.0; ///< vtkVolumeMapper's SampleDistance (world units)
   int ScalarMode = 0, ArrayAccessMode = 0, ArrayId = -1;
   const char* ArrayName = nullptr;
 };
@@ -117,8 +122,10 @@ private:
   // gives a scalar), and what it was tabulated from.
   vtkNew<vtkVolumeProperty> LabelUnion;
   ChangeKey LabelUnionKey;
-  // Independent components: the material component's functions as component 0's.
+  // Independent components: the material component's functions as component 0's; a 2D
+  // transfer function: what each scalar shows at its most visible gradient.
   vtkNew<vtkVolumeProperty> ComponentView;
+  ChangeKey Transfer2DKey;
   // The data, transfer function and materials last scanned for unassigned voxels.
   ChangeKey UnassignedKey;
 };

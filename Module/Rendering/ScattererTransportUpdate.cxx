@@ -3,6 +3,7 @@
 #include "ScattererFramePlan.h"
 #include "ScattererIlluminationParameters.h"
 #include "ScattererTemplateCache.h"
+#include "ScattererTransfer2D.h"
 #include "ScattererWarnOnce.h"
 
 #include "vtkColorTransferFunction.h"
@@ -161,6 +162,11 @@ std::string TransportUpdate::Update(vtkRenderer* ren, vtkVolume* vol, const Fram
   {
     key << '|' << volumeTexture->ScalarRange[c][0] << ',' << volumeTexture->ScalarRange[c][1];
   }
+  if (plan.Transfer2D)
+  {
+    vtkImageData* table = property->GetTransferFunction2D();
+    key << "|2d:" << table << ',' << table->GetMTime() << ',' << plan.SampleDistance;
+  }
   key << '|' << templates.GetGenerationKey() << '|' << parameters.PhotonCap << '|' << plan.Radius;
   // A label-map mask adds one medium row per label: its transfer functions count too.
   key << '|' << plan.Features.LabelMask;
@@ -240,7 +246,18 @@ void TransportUpdate::UpdateComponents(vtkVolume* vol, const FramePlan& plan)
       t.ComponentMode = t.Components == 2 ? TransportInputs::LuminanceAlpha : TransportInputs::RGBA;
       break;
     default:
-      t.ComponentMode = TransportInputs::OneScalar;
+      t.ComponentMode = plan.Transfer2D ? TransportInputs::Transfer2D : TransportInputs::OneScalar;
+  }
+  // A 2D transfer function's gradient, as VTK's computeGradient takes it.
+  double spacing[3];
+  plan.Image->GetSpacing(spacing);
+  const double mean = (std::abs(spacing[0]) + std::abs(spacing[1]) + std::abs(spacing[2])) / 3.0;
+  for (int a = 0; a < 3; ++a)
+  {
+    const unsigned int texels[3] = { t.Volume->GetWidth(), t.Volume->GetHeight(),
+      t.Volume->GetDepth() };
+    t.VoxelStep[a] = 1.0f / static_cast<float>(std::max(1u, texels[a]));
+    t.GradientAspect[a] = mean > 0.0 ? static_cast<float>(std::abs(spacing[a]) * 2.0 / mean) : 1.0f;
   }
   for (int c = 0; c < 4; ++c)
   {
@@ -370,6 +387,13 @@ void TransportUpdate::UpdateTables(vtkVolume* vol, const FramePlan& plan,
   t.Medium.assign(static_cast<size_t>(4) * kMediumTableSize * t.MediumRows, 0.0f);
   switch (t.ComponentMode)
   {
+    case TransportInputs::Transfer2D: // its own table, over (scalar, gradient magnitude)
+    {
+      int width = 0;
+      TabulateTransfer2D(
+        property->GetTransferFunction2D(), plan.SampleDistance, t.Medium, width, t.MediumRows);
+      break;
+    }
     case TransportInputs::Independent:
       for (int c = 0; c < t.Components; ++c)
       {

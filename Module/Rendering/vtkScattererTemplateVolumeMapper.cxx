@@ -373,6 +373,7 @@ std::string vtkScattererTemplateVolumeMapper::PlanFrame(vtkRenderer* ren, vtkVol
   source.LabelMapMask = this->GetMaskType() == LabelMapMaskType;
   source.BlendMode = this->GetBlendMode();
   source.UseDepthPass = this->GetUseDepthPass() != 0;
+  source.SampleDistance = this->GetSampleDistance();
   source.ScalarMode = this->ScalarMode;
   source.ArrayAccessMode = this->ArrayAccessMode;
   source.ArrayId = this->ArrayId;

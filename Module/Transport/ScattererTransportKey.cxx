@@ -54,6 +54,8 @@ std::uint64_t TransportKey(const vtkScattererTransportVolume::Inputs& in)
   f.Add(in.Components);
   f.Add(in.MaterialComponent);
   f.Add(in.ComponentWeights, 4);
+  f.Add(in.VoxelStep, 3);
+  f.Add(in.GradientAspect, 3);
   f.Add(in.OcclusionScale);
   f.Add(in.Downsample);
   f.Add(in.IndexOrigin, 3);

@@ -99,6 +99,8 @@ void SetCommonUniforms(vtkShaderProgram* program, const TransportGrid& grid,
   program->SetUniformi("st_components", in.Components);
   program->SetUniformi("st_materialComponent", in.MaterialComponent);
   program->SetUniform4f("st_componentWeights", in.ComponentWeights);
+  program->SetUniform3f("st_voxelStep", in.VoxelStep);
+  program->SetUniform3f("st_gradientAspect", in.GradientAspect);
   program->SetUniformf("st_occlusionScale", in.OcclusionScale);
   float dims[3];
   grid.GetDims(dims);

@@ -18,6 +18,8 @@ uniform int st_componentMode;      // how the components make the medium (ST_ONE
 uniform int st_components;         // components of st_volume
 uniform int st_materialComponent;  // the component the material table is over
 uniform vec4 st_componentWeights;  // independent components: vtkVolumeProperty's weights
+uniform vec3 st_voxelStep;         // 2D transfer function: one texel of st_volume
+uniform vec3 st_gradientAspect;    // 2D transfer function: spacing * 2 / mean spacing per axis
 uniform sampler2D st_medium;       // over the normalised scalar: rgb albedo (colour), a sigma_t per world unit
 uniform float st_occlusionScale;  // OcclusionStrength: scales the attenuation along light paths only
 uniform vec3 st_gridDims;
@@ -43,6 +45,7 @@ const int ST_ONE_SCALAR = 0;
 const int ST_INDEPENDENT = 1;
 const int ST_LUMINANCE_ALPHA = 2;
 const int ST_RGBA = 3;
+const int ST_TRANSFER_2D = 4;
 
 vec3 st_gridToTexture(vec3 j)
 {
@@ -94,6 +97,22 @@ bool st_kept(vec3 t)
 vec4 st_mediumRow(float s, float row)
 {
   return texture(st_medium, vec2(s, (row + 0.5) / st_mediumRows));
+}
+
+// The gradient magnitude a 2D transfer function is looked up at, as VTK 9.1's ray caster
+// computes it (computeGradient): central differences of the scalar over one texel, each
+// axis divided by its spacing aspect, over a quarter of the scalar range, clamped to 1.
+// In normalised scalars the range cancels.
+float st_gradientMagnitudeAt(vec3 t)
+{
+  vec3 d;
+  for (int a = 0; a < 3; ++a)
+  {
+    vec3 step = vec3(0.0);
+    step[a] = st_voxelStep[a];
+    d[a] = (texture(st_volume, t + step).r - texture(st_volume, t - step).r) * st_scalarScale.x;
+  }
+  return clamp(length(d / st_gradientAspect) / 0.25, 0.0, 1.0);
 }
 
 // The medium of several components at their normalised scalars s, as VTK's ray caster
@@ -150,6 +169,10 @@ vec4 st_mediumAt(vec3 t)
   if (any(lessThan(t, vec3(0.0))) || any(greaterThan(t, vec3(1.0))) || !st_kept(t))
   {
     return vec4(0.0);
+  }
+  if (st_componentMode == ST_TRANSFER_2D)
+  {
+    return texture(st_medium, vec2(st_scalarAt(t), st_gradientMagnitudeAt(t)));
   }
   if (st_componentMode != ST_ONE_SCALAR)
   {

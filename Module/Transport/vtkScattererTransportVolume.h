@@ -95,19 +95,24 @@ public:
     /// - OneScalar: row 0 of Medium (or a label's row) at the scalar;
     /// - Independent: row c at component c, mixed by ComponentWeights;
     /// - LuminanceAlpha: albedo from row 0 at component 0, sigma_t from row 1 at component 1;
-    /// - RGBA: albedo = the rgb components, sigma_t from row 0 at component 3.
+    /// - RGBA: albedo = the rgb components, sigma_t from row 0 at component 3;
+    /// - Transfer2D: Medium is a 2D table over (scalar, gradient magnitude), the
+    ///   magnitude as VTK's ray caster computes it (VoxelStep, GradientAspect).
     enum ComponentRule
     {
       OneScalar = 0,
       Independent = 1,
       LuminanceAlpha = 2,
-      RGBA = 3
+      RGBA = 3,
+      Transfer2D = 4
     };
     int ComponentMode = OneScalar;
     int Components = 1;                         ///< components of the volume texture (1-4)
     int MaterialComponent = 0;                  ///< the component MaterialTable is over
     float ComponentWeights[4] = { 1, 1, 1, 1 }; ///< vtkVolumeProperty's component weights
-    unsigned long VolumeUploadTime = 0;         ///< changes when the texture's content does
+    float VoxelStep[3] = { 0, 0, 0 };           ///< one texel of the volume texture (Transfer2D)
+    float GradientAspect[3] = { 1, 1, 1 }; ///< spacing * 2 / mean spacing, per axis (Transfer2D)
+    unsigned long VolumeUploadTime = 0;    ///< changes when the texture's content does
     /// A binary mask on the volume's grid (R, nearest; VTK's convention: a voxel whose
     /// mask value is 0 is masked out), or none. Masked-out matter neither shows (the ray
     /// caster's own mask) nor casts shadow or scatters light (here).
@@ -123,7 +128,8 @@ public:
     double TexToIndex[16] = {};   ///< volume texture coordinates -> structured index (row-major)
     /// Over the normalised scalar [0, 1], 4 per entry: albedo rgb (the colour transfer
     /// function) and sigma_t per world unit (the opacity transfer function); MediumRows
-    /// rows of equal length (a label-map mask: one per label value, 0..255).
+    /// rows of equal length (a label-map mask: one per label value, 0..255; a 2D transfer
+    /// function: one per gradient-magnitude bin).
     std::vector<float> Medium;
     int MediumRows = 1;
     float OcclusionScale = 1;      ///< OcclusionStrength

@@ -243,6 +243,52 @@ TEST(TransportVolume, DependentComponentsTakeOpacityFromTheirLastComponent)
   }
 }
 
+// A 2D transfer function (RGBA over the scalar and the gradient magnitude): opacity
+// `alpha` per ray step for scalars in the upper half of the range and gradient
+// magnitudes of at least `minGradient`.
+vtkSmartPointer<vtkImageData> Transfer2D(double alpha, double minGradient)
+{
+  const int w = 64, h = 32;
+  auto table = vtkSmartPointer<vtkImageData>::New();
+  table->SetDimensions(w, h, 1);
+  table->AllocateScalars(VTK_FLOAT, 4);
+  auto* p = static_cast<float*>(table->GetScalarPointer());
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x, p += 4)
+    {
+      const bool shown = x >= w / 2 && (y + 0.5) / h >= minGradient;
+      p[0] = p[1] = p[2] = 0.8f;
+      p[3] = shown ? static_cast<float>(alpha) : 0.0f;
+    }
+  return table;
+}
+
+TEST(TransportVolume, Transfer2DOpacityIsPerRayStepAndReadsTheGradient)
+{
+  const int n = 32;
+  auto image = MakeVolume(
+    n, 1.0, [](int, int, int k) -> unsigned char { return InSlab(k) || InFloor(k) ? 200 : 0; });
+  // Every gradient: the slab attenuates as a 1D function of 0.1 per unit would (the
+  // mapper's SampleDistance is 1). Only strong gradients: just the slab's two boundary
+  // voxels, where the central difference spans the face, attenuate.
+  for (double minGradient : { 0.0, 0.5 })
+  {
+    TransportScene scene(image, 0.1);
+    scene.Property->SetTransferFunctionMode(vtkVolumeProperty::TF_2D);
+    scene.Property->SetTransferFunction2D(Transfer2D(0.1, minGradient));
+    ASSERT_DOUBLE_EQ(scene.Mapper->GetSampleDistance(), 1.0);
+    scene.SetDirectional(0, 0, 1);
+    if (minGradient == 0.0)
+    {
+      ExpectSlabShadow(scene, true, "a 2D transfer function, every gradient");
+      continue;
+    }
+    const auto t = scene.Transmittance();
+    ASSERT_EQ(t.size(), static_cast<size_t>(n * n * n));
+    EXPECT_NEAR(scene.At(t, 16, 16, 6), 0.9 * 0.9, 0.05) << "only the slab's faces attenuate";
+  }
+}
+
 TEST(TransportVolume, SlabObliqueLightIsBeerLambert)
 {
   const int n = 40;

@@ -1,9 +1,9 @@
-// Multi-component volumes lit through the transport volume (issue 14): independent
-// components (each with its own transfer functions), luminance + alpha and RGBA. A ball
-// above a plate, lit from above: with illumination off the picture is the stock
-// mapper's to the pixel; on, the ball's shadow darkens the plate, no black hole appears
-// where the stock mapper shows something, and a second frame is the same picture.
-// SCATTERER_TEST_IMAGES=<dir> writes the pictures there to look at.
+// Inputs beyond one scalar with 1D transfer functions, lit through the transport volume
+// (issue 14): independent components (each with its own transfer functions), luminance +
+// alpha, RGBA, and a 2D transfer function. A ball above a plate, lit from above: with illumination
+// off the picture is the stock mapper's to the pixel; on, the ball's shadow darkens the plate, no
+// black hole appears where the stock mapper shows something, and a second frame is the same
+// picture. SCATTERER_TEST_IMAGES=<dir> writes the pictures there to look at.
 #include "Common/ScattererMapperSetup.h"
 #include "ScattererRenderHarness.h"
 
@@ -36,7 +36,8 @@ enum class Kind
 {
   Independent, // component 0: the ball (red), component 1: the plate (green)
   LuminanceAlpha,
-  RGBA
+  RGBA,
+  Transfer2D // one scalar (ball 200, plate 150), colour and opacity from a 2D table
 };
 
 bool InBall(int i, int j, int k)
@@ -52,7 +53,7 @@ bool InPlate(int, int, int k)
 
 vtkSmartPointer<vtkImageData> Volume(Kind kind)
 {
-  const int components = kind == Kind::RGBA ? 4 : 2;
+  const int components = kind == Kind::RGBA ? 4 : kind == Kind::Transfer2D ? 1 : 2;
   auto image = vtkSmartPointer<vtkImageData>::New();
   image->SetDimensions(N, N, N);
   image->AllocateScalars(VTK_UNSIGNED_CHAR, components);
@@ -79,6 +80,9 @@ vtkSmartPointer<vtkImageData> Volume(Kind kind)
             *p++ = ball ? 40 : 230;
             *p++ = matter;
             break;
+          case Kind::Transfer2D:
+            *p++ = ball ? 200 : plate ? 150 : 0;
+            break;
         }
       }
   return image;
@@ -102,6 +106,28 @@ vtkSmartPointer<vtkColorTransferFunction> Colour(double r, double g, double b)
   return c;
 }
 
+// Over the scalar range [0, 200] and every gradient: the plate's 150 green, the ball's
+// 200 orange; opacity 0.4 per ray step (as a 1D function's 0.6 per unit at step 0.5).
+vtkSmartPointer<vtkImageData> Table2D()
+{
+  const int w = 128, h = 16;
+  auto table = vtkSmartPointer<vtkImageData>::New();
+  table->SetDimensions(w, h, 1);
+  table->AllocateScalars(VTK_FLOAT, 4);
+  auto* p = static_cast<float*>(table->GetScalarPointer());
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x, p += 4)
+    {
+      const double value = 200.0 * (x + 0.5) / w;
+      const bool ball = value > 175, plate = value > 125 && !ball;
+      p[0] = ball ? 1.0f : 0.3f;
+      p[1] = ball ? 0.6f : 0.9f;
+      p[2] = ball ? 0.2f : 0.3f;
+      p[3] = ball || plate ? 0.4f : 0.0f;
+    }
+  return table;
+}
+
 struct Pictures
 {
   std::vector<unsigned char> Stock, Off, Lit, LitAgain;
@@ -121,6 +147,11 @@ Pictures Render(Kind kind)
     property->SetColor(0, Colour(1.0, 0.3, 0.2));
     property->SetColor(1, Colour(0.3, 0.9, 0.3));
     property->SetScalarOpacityUnitDistance(1, 1.0);
+  }
+  else if (kind == Kind::Transfer2D)
+  {
+    property->SetTransferFunctionMode(vtkVolumeProperty::TF_2D);
+    property->SetTransferFunction2D(Table2D());
   }
   else
   {
@@ -171,8 +202,8 @@ Pictures Render(Kind kind)
 
   if (const char* dir = std::getenv("SCATTERER_TEST_IMAGES"))
   {
-    const char* const names[] = { "independent", "luminance-alpha", "rgba" };
-    const std::string base = std::string(dir) + "/multicomponent-" + names[static_cast<int>(kind)];
+    const char* const names[] = { "independent", "luminance-alpha", "rgba", "transfer2d" };
+    const std::string base = std::string(dir) + "/lit-input-" + names[static_cast<int>(kind)];
     const int* size = window->GetSize();
     scatterer_testing::SavePng(base + "-stock.png", out.Stock, size[0], size[1]);
     scatterer_testing::SavePng(base + "-lit.png", out.Lit, size[0], size[1]);
@@ -218,17 +249,22 @@ void Check(Kind kind, const char* feature)
 }
 }
 
-TEST(MultiComponent, IndependentComponentsAreLitAsTheirComposite)
+TEST(LitInputKinds, IndependentComponentsAreLitAsTheirComposite)
 {
   Check(Kind::Independent, "independent");
 }
 
-TEST(MultiComponent, LuminanceAlphaIsLit)
+TEST(LitInputKinds, LuminanceAlphaIsLit)
 {
   Check(Kind::LuminanceAlpha, "dependent");
 }
 
-TEST(MultiComponent, RgbaIsLitWithTheDataColour)
+TEST(LitInputKinds, RgbaIsLitWithTheDataColour)
 {
   Check(Kind::RGBA, "dependent");
+}
+
+TEST(LitInputKinds, Transfer2DIsLit)
+{
+  Check(Kind::Transfer2D, "transport");
 }
