@@ -45,8 +45,8 @@ std::string Transfer2DProblem(vtkImageData* table)
   return "";
 }
 
-void TabulateTransfer2D(vtkImageData* table, double sampleDistance, std::vector<float>& medium,
-  int& width, int& rows)
+void TabulateTransfer2D(
+  vtkImageData* table, double sampleDistance, std::vector<float>& medium, int& width, int& rows)
 {
   int dims[3];
   table->GetDimensions(dims);

@@ -25,8 +25,8 @@ std::string Transfer2DProblem(vtkImageData* table);
  * entries, 4 floats each (albedo rgb, sigma_t per world unit), the table's own texels
  * (at most 4096 x 1024; larger tables are sampled at the nearest texel).
  */
-void TabulateTransfer2D(vtkImageData* table, double sampleDistance, std::vector<float>& medium,
-  int& width, int& rows);
+void TabulateTransfer2D(
+  vtkImageData* table, double sampleDistance, std::vector<float>& medium, int& width, int& rows);
 
 /**
  * What a scalar shows at its most visible gradient, over the scalar range [lo, hi]:

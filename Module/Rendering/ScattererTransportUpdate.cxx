@@ -90,15 +90,14 @@ std::string TransportUpdate::Update(vtkRenderer* ren, vtkVolume* vol, const Fram
   const IlluminationParameters& parameters, const TemplateCache& templates,
   const TransportSource& source, WarnOnce& warn, std::string& error)
 {
-  vtkVolumeTexture* volumeTexture = source.VolumeTexture;
-  if (!volumeTexture ||
-    volumeTexture->GetPartitions()[0] * volumeTexture->GetPartitions()[1] *
-        volumeTexture->GetPartitions()[2] !=
-      1)
+  std::string whyNot;
+  vtkVolumeTexture* volumeTexture =
+    this->WholeVolumeTexture(ren, vol, plan, source.VolumeTexture, whyNot);
+  if (!volumeTexture)
   {
-    warn("Scatterer-template illumination does not apply to a partitioned volume (one "
-         "3D texture per block); this volume renders as vtkOpenGLGPUVolumeRayCastMapper would.");
-    return "a partitioned volume";
+    warn("Scatterer-template illumination cannot light this partitioned volume: " + whyNot +
+      "; this volume renders as vtkOpenGLGPUVolumeRayCastMapper would.");
+    return "a partitioned volume that does not fit one texture";
   }
   vtkVolumeTexture::VolumeBlock* block = volumeTexture->GetCurrentBlock();
   if (!block || !block->TextureObject)
@@ -108,6 +107,9 @@ std::string TransportUpdate::Update(vtkRenderer* ren, vtkVolume* vol, const Fram
   auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
   vtkScattererTransportVolume::Inputs& t = this->Inputs;
   t.Volume = block->TextureObject;
+  vtkNew<vtkMatrix4x4> pointToCell;
+  vtkMatrix4x4::Invert(volumeTexture->CellToPointMatrix, pointToCell);
+  vtkMatrix4x4::Multiply4x4(block->TextureToDataset, pointToCell, this->VolumeTextureToDataset);
   this->UpdateComponents(vol, plan);
   // Scale and bias as the ray caster applies them: none for 64-bit types (they come
   // pre-scaled) and none for RGBA, whose colour is the texel itself (VTK 9.1's
@@ -229,6 +231,60 @@ std::string TransportUpdate::Update(vtkRenderer* ren, vtkVolume* vol, const Fram
     return "the light transport volume could not be built";
   }
   return "";
+}
+
+vtkVolumeTexture* TransportUpdate::WholeVolumeTexture(vtkRenderer* ren, vtkVolume* vol,
+  const FramePlan& plan, vtkVolumeTexture* rayCaster, std::string& why)
+{
+  if (!rayCaster)
+  {
+    why = "the volume is not loaded";
+    return nullptr;
+  }
+  const auto& parts = rayCaster->GetPartitions();
+  if (parts[0] * parts[1] * parts[2] == 1)
+  {
+    this->WholeVolume->ReleaseGraphicsResources(ren->GetRenderWindow());
+    this->WholeVolumeKey.Clear();
+    return rayCaster;
+  }
+  const int interpolation = vol->GetProperty()->GetInterpolationType();
+  KeyWriter key;
+  key << plan.Image << '|' << plan.Image->GetMTime() << '|' << plan.Scalars << '|'
+      << plan.Scalars->GetMTime() << '|' << plan.CellFlag << '|' << ren->GetRenderWindow();
+  if (this->WholeVolumeKey.Differs(key.Key()))
+  {
+    this->WholeVolumeKey.Clear();
+    if (!this->WholeVolume->LoadVolume(ren, plan.Image, plan.Scalars, plan.CellFlag, interpolation))
+    {
+      why = "the whole volume does not fit one 3D texture here (the transport reads it "
+            "whole)";
+      return nullptr;
+    }
+    this->WholeVolumeKey.Record(key.Key());
+  }
+  // Linear or nearest, as the property asks now.
+  this->WholeVolume->UpdateVolume(vol->GetProperty());
+  return this->WholeVolume;
+}
+
+void TransportUpdate::DatasetToLightTexture(double rowMajor[16]) const
+{
+  // texture -> light texture: t * scale + offset, after dataset -> texture.
+  float scale[3], offset[3];
+  this->Transport->GetTextureTransform(scale, offset);
+  vtkNew<vtkMatrix4x4> datasetToTexture, toLight, product;
+  vtkMatrix4x4::Invert(this->VolumeTextureToDataset, datasetToTexture);
+  for (int a = 0; a < 3; ++a)
+  {
+    toLight->SetElement(a, a, scale[a]);
+    toLight->SetElement(a, 3, offset[a]);
+  }
+  vtkMatrix4x4::Multiply4x4(toLight, datasetToTexture, product);
+  for (int i = 0; i < 16; ++i)
+  {
+    rowMajor[i] = product->GetElement(i / 4, i % 4);
+  }
 }
 
 void TransportUpdate::UpdateComponents(vtkVolume* vol, const FramePlan& plan)
@@ -462,6 +518,8 @@ void TransportUpdate::UpdateTables(vtkVolume* vol, const FramePlan& plan,
 
 void TransportUpdate::ReleaseGraphicsResources(vtkWindow* window)
 {
+  this->WholeVolume->ReleaseGraphicsResources(window);
+  this->WholeVolumeKey.Clear();
   this->Transport->ReleaseGraphicsResources(window);
   this->Mask.ReleaseGraphicsResources(window);
 }

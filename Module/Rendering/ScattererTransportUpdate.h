@@ -15,13 +15,16 @@
 #include "vtkScattererLightExchange.h"
 #include "vtkScattererTransportVolume.h"
 
+#include "vtkMatrix4x4.h" // for vtkNew<vtkMatrix4x4>
 #include "vtkNew.h"
+#include "vtkVolumeTexture.h" // for vtkNew<vtkVolumeTexture>
 
 #include <functional>
 #include <string>
 
 class vtkColorTransferFunction;
 class vtkImageData;
+class vtkMatrix4x4;
 class vtkPiecewiseFunction;
 class vtkPlaneCollection;
 class vtkRenderer;
@@ -87,6 +90,9 @@ public:
 
   vtkScattererTransportVolume* GetVolume() const { return this->Transport; }
 
+  /** Dataset coordinates -> the light texture's, row-major (after an Update). */
+  void DatasetToLightTexture(double rowMajor[16]) const;
+
   /** True when the last update lit a piece with the light exchange's maps. */
   bool UsesLightExchange() const
   {
@@ -96,6 +102,12 @@ public:
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:
+  /**
+   * The texture the transport reads: the ray caster's own, or for a partitioned volume
+   * the whole volume loaded into one (null, with @p why, if it does not fit).
+   */
+  vtkVolumeTexture* WholeVolumeTexture(vtkRenderer* renderer, vtkVolume* volume,
+    const FramePlan& plan, vtkVolumeTexture* rayCaster, std::string& why);
   /** Where the volume texture lies (texture -> dataset -> world) and what clips it. */
   void UpdateGeometry(vtkVolume* volume, const FramePlan& plan, const TransportSource& source,
     const IlluminationParameters& parameters);
@@ -112,6 +124,14 @@ private:
   vtkNew<vtkScattererTransportVolume> Transport;
   // The mask (binary or label map) as the transport volume reads it.
   scatterer_gpu::MaskTexture Mask;
+  // A partitioned volume: the ray caster streams one block at a time through one
+  // texture, so the transport reads the whole volume from a texture of its own, loaded
+  // by VTK's own class (same scale, bias and ranges) when the data changes.
+  vtkNew<vtkVolumeTexture> WholeVolume;
+  ChangeKey WholeVolumeKey;
+  // The texel -> dataset matrix of the texture the transport read (VTK's texture ->
+  // dataset after its cell-to-point offset is undone).
+  vtkNew<vtkMatrix4x4> VolumeTextureToDataset;
   // What the transport volume is built from (kept between frames for the tables).
   vtkScattererTransportVolume::Inputs Inputs;
   ChangeKey Tables;

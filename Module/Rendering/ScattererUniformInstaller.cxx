@@ -23,8 +23,7 @@ void UniformInstaller::Install(vtkVolume* vol, const FramePlan& plan,
   {
     this->Samplers.push_back({ "st_transport", "sampler3D" });
     this->Textures.push_back(textures.TransportLight);
-    std::copy(textures.TransportScale, textures.TransportScale + 3, u.TransportScale);
-    std::copy(textures.TransportOffset, textures.TransportOffset + 3, u.TransportOffset);
+    std::copy(textures.DatasetToTransport, textures.DatasetToTransport + 16, u.DatasetToTransport);
   }
   else
   {

@@ -23,10 +23,10 @@ struct IlluminationParameters;
 /** The textures of a frame's shader. */
 struct FrameTextures
 {
-  /// Transport mode: the received-light texture, and volume -> light texture coordinates.
+  /// Transport mode: the received-light texture, and dataset -> light texture
+  /// coordinates (row-major).
   vtkTextureObject* TransportLight = nullptr;
-  float TransportScale[3] = { 1, 1, 1 };
-  float TransportOffset[3] = { 0, 0, 0 };
+  double DatasetToTransport[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
   /// Per-sample mode: the packed templates.
   vtkTextureObject* Templates = nullptr;
   /// Texels per row of the packed templates (the most photons any template keeps).

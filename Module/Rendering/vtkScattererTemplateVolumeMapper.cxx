@@ -402,6 +402,15 @@ std::string vtkScattererTemplateVolumeMapper::UpdateTransport(vtkRenderer* ren, 
   }
   scatterer_render::TransportSource source;
   source.VolumeTexture = this->AssembledInputs.begin()->second.Texture;
+  // VTK 9.1: a partitioned texture loaded (PreLoadData) but not yet drawn throws when it
+  // is loaded again (ClearBlocks reads the sorted block list only drawing fills), as the
+  // ray caster does next on a first frame. Sorting the blocks now, as drawing does first,
+  // makes that reload safe.
+  const auto& parts = source.VolumeTexture->GetPartitions();
+  if (parts[0] * parts[1] * parts[2] > 1)
+  {
+    source.VolumeTexture->SortBlocksBackToFront(ren, vol->GetMatrix());
+  }
   source.Mask = this->GetMaskInput();
   source.MaskBlend = this->GetMaskBlendFactor();
   source.ClippingPlanes = this->GetClippingPlanes();
@@ -440,8 +449,7 @@ std::string vtkScattererTemplateVolumeMapper::RenderIlluminated(vtkRenderer* ren
   if (plan.Features.Transport)
   {
     textures.TransportLight = in.Transport.GetVolume()->GetLightTexture();
-    in.Transport.GetVolume()->GetTextureTransform(
-      textures.TransportScale, textures.TransportOffset);
+    in.Transport.DatasetToLightTexture(textures.DatasetToTransport);
   }
   else
   {

@@ -3,6 +3,8 @@
 #include "ScattererSceneLights.h"
 #include "ScattererSceneMaterials.h"
 
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
 #include "vtkOpenGLShaderProperty.h"
 #include "vtkShader.h"
 #include "vtkUniforms.h"
@@ -144,8 +146,11 @@ void SetIlluminationUniforms(
   u->SetUniform3f(name("st_toTexX"), v.ToTex[0]);
   u->SetUniform3f(name("st_toTexY"), v.ToTex[1]);
   u->SetUniform3f(name("st_toTexZ"), v.ToTex[2]);
-  u->SetUniform3f(name("st_transportScale"), v.TransportScale);
-  u->SetUniform3f(name("st_transportOffset"), v.TransportOffset);
+  // GL takes the elements as columns: transposed, so that the GLSL reads M * v.
+  vtkNew<vtkMatrix4x4> datasetToTransport;
+  datasetToTransport->DeepCopy(v.DatasetToTransport);
+  datasetToTransport->Transpose();
+  u->SetUniformMatrix(name("st_datasetToTransport"), datasetToTransport);
   u->SetUniform3f(name("st_indexOrigin"), v.IndexOrigin);
   // Arrays always hold the limits' worth of entries (unused ones zero): VTK declares a
   // uniform array with the size it is given, so sizing them by the scene's counts

@@ -34,8 +34,8 @@ struct UniformValues
   float LongRange = 3.0f;
   int Interval = 4;
   float ToTex[3][3] = {};
-  float TransportScale[3] = { 1, 1, 1 }; ///< transport mode: volume -> light texture coordinates
-  float TransportOffset[3] = { 0, 0, 0 };
+  /// transport mode: dataset coordinates -> light texture coordinates (row-major)
+  double DatasetToTransport[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
   float IndexOrigin[3] = { 0, 0, 0 }; ///< extent index of the first voxel (template hash)
   const scatterer_scene::LightSet* Lights = nullptr;
   std::vector<float> MaterialRanges; ///< 2 per material

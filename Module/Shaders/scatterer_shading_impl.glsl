@@ -80,7 +80,7 @@
         // The light transport volume: the light this point receives, summed over
         // the lights (global shadows, template in-scattering, multiple scattering,
         // VTK's ambient term occluded like the light): one texture read.
-        st_F = texture3D(st_transport, g_dataPos * st_transportScale + st_transportOffset).rgb;
+        st_F = texture3D(st_transport, (st_toTransport * vec4(g_dataPos, 1.0)).xyz).rgb;
         // Highlight compression: light above st_knee approaches 1 smoothly instead of
         // clipping (multiple scattering makes dense, white materials glow well above
         // what a display shows); below it the light is kept as it is.

@@ -211,6 +211,53 @@ Pictures Render(Kind kind)
   return out;
 }
 
+// One scalar (ball 200, plate 150; the 2D-table scene's volume) with 1D functions,
+// rendered by the stock mapper or ours (illumination on), split by the ray caster into
+// `parts` x `parts` x 1 textures.
+std::vector<unsigned char> RenderOneScalar(bool ours, int parts, std::string* features)
+{
+  const auto image = Volume(Kind::Transfer2D);
+  vtkNew<vtkVolumeProperty> property;
+  property->SetScalarOpacityUnitDistance(1.0);
+  property->SetScalarOpacity(Opacity());
+  auto colour = vtkSmartPointer<vtkColorTransferFunction>::New();
+  colour->AddRGBPoint(0, 0.3, 0.9, 0.3);
+  colour->AddRGBPoint(170, 0.3, 0.9, 0.3);
+  colour->AddRGBPoint(190, 1.0, 0.6, 0.2);
+  colour->AddRGBPoint(255, 1.0, 0.6, 0.2);
+  property->SetColor(colour);
+  property->SetInterpolationTypeToLinear();
+  vtkNew<vtkScattererTemplateVolumeMapper> scatterer;
+  vtkNew<vtkOpenGLGPUVolumeRayCastMapper> stock;
+  vtkOpenGLGPUVolumeRayCastMapper* mapper = ours
+    ? static_cast<vtkOpenGLGPUVolumeRayCastMapper*>(scatterer)
+    : static_cast<vtkOpenGLGPUVolumeRayCastMapper*>(stock);
+  mapper->SetInputData(image);
+  mapper->AutoAdjustSampleDistancesOff();
+  mapper->SetSampleDistance(0.5);
+  mapper->UseJitteringOff();
+  if (parts > 1) // VTK 9.1 throws on SetPartitions(1, 1, 1)
+  {
+    mapper->SetPartitions(parts, parts, 1);
+  }
+  vtkNew<vtkRenderer> renderer;
+  scatterer_examples::AddVolume(renderer, mapper, property);
+  renderer->AutomaticLightCreationOff();
+  scatterer_testing::AddSceneLight(renderer, 0.35, 0.0, 1.0);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  const double c = 0.5 * (N - 1);
+  camera->SetFocalPoint(c, c, 14);
+  camera->SetPosition(c - 40, c - 110, 90);
+  camera->SetViewUp(0, 0, 1);
+  renderer->ResetCameraClippingRange();
+  auto pixels = scatterer_testing::RenderSceneOnce(renderer, mapper);
+  if (features)
+  {
+    *features = scatterer->GetLastShaderFeatures();
+  }
+  return pixels;
+}
+
 void Check(Kind kind, const char* feature)
 {
   const Pictures p = Render(kind);
@@ -267,4 +314,37 @@ TEST(LitInputKinds, RgbaIsLitWithTheDataColour)
 TEST(LitInputKinds, Transfer2DIsLit)
 {
   Check(Kind::Transfer2D, "transport");
+}
+
+TEST(LitInputKinds, PartitionedVolumeIsLitAsTheWholeWithoutSeams)
+{
+  // The ray caster streams a partitioned volume block by block; the transport reads the
+  // whole volume from a texture of its own, and each block looks its light up through
+  // VTK's per-block texture -> dataset matrix: the picture is the unpartitioned one.
+  std::string features;
+  const auto whole = RenderOneScalar(true, 1, nullptr);
+  const auto parts = RenderOneScalar(true, 2, &features);
+  const auto stockWhole = RenderOneScalar(false, 1, nullptr);
+  const auto stockParts = RenderOneScalar(false, 2, nullptr);
+  EXPECT_EQ(features.find("stock"), std::string::npos) << features;
+  const auto lit = scatterer_testing::CompareRgb(whole, parts, 16);
+  const auto ray = scatterer_testing::CompareRgb(stockWhole, stockParts, 16);
+  const auto illumination = scatterer_testing::CompareRgb(whole, stockWhole, 16);
+  std::printf("partitioned vs whole: lit mean %.3f, %.2f%% over 16 levels; stock mean %.3f, "
+              "%.2f%%; lit vs stock mean %.2f\n",
+    lit.Mean, 100.0 * lit.FractionOver, ray.Mean, 100.0 * ray.FractionOver, illumination.Mean);
+  if (const char* dir = std::getenv("SCATTERER_TEST_IMAGES"))
+  {
+    const int* size = scatterer_testing::SharedWindow()->GetSize();
+    scatterer_testing::SavePng(std::string(dir) + "/lit-partitioned.png", parts, size[0], size[1]);
+    scatterer_testing::SavePng(std::string(dir) + "/lit-whole.png", whole, size[0], size[1]);
+    scatterer_testing::SavePng(
+      std::string(dir) + "/stock-partitioned.png", stockParts, size[0], size[1]);
+    scatterer_testing::SavePng(std::string(dir) + "/stock-whole.png", stockWhole, size[0], size[1]);
+  }
+  ASSERT_GT(illumination.Mean, 5.0) << "the illumination changes nothing: the test sees nothing";
+  // Block borders may differ as the stock ray caster's own do, no more (the light looked
+  // up half a texel off in the blocks measured 0.60 / 2.09 % here, against 0.50 / 1.86 %).
+  EXPECT_LE(lit.Mean, ray.Mean + 0.05);
+  EXPECT_LE(lit.FractionOver, ray.FractionOver);
 }
