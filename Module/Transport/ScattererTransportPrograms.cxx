@@ -26,34 +26,43 @@ namespace scatterer_gpu
 {
 namespace
 {
-// The common declarations go where the pass has its tag.
-std::string WithCommon(const char* pass)
+// The common declarations, after the variant's defines, go where the pass has its tag.
+std::string WithCommon(const char* pass, const std::string& variant)
 {
   std::string text = pass;
   const std::string tag = "//VTK::Transport::Common";
   const auto at = text.find(tag);
   if (at != std::string::npos)
   {
-    text.replace(at, tag.size(), scatterer_transport_common);
+    text.replace(at, tag.size(), variant + scatterer_transport_common);
   }
   return text;
 }
 }
 
+std::string TransportPrograms::Variant(const vtkScattererTransportVolume::Inputs& in)
+{
+  return "#define ST_COMPONENT_MODE " + std::to_string(in.ComponentMode) +
+    "\n#define ST_MATERIAL_COMPONENT " + std::to_string(in.MaterialComponent) + "\n";
+}
+
 TransportPrograms::TransportPrograms() = default;
 TransportPrograms::~TransportPrograms() = default;
 
-bool TransportPrograms::Create(vtkOpenGLRenderWindow* window, std::string& why)
+bool TransportPrograms::Create(
+  vtkOpenGLRenderWindow* window, const std::string& variant, std::string& why)
 {
+  this->ReleaseGraphicsResources(window);
+  this->CreatedVariant = variant;
   const std::string vs = vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader();
   auto quad = [&](const std::string& fs)
   {
     return std::unique_ptr<vtkOpenGLQuadHelper>(
       new vtkOpenGLQuadHelper(window, vs.c_str(), fs.c_str(), ""));
   };
-  this->Sweep = quad(WithCommon(scatterer_transport_sweep));
-  this->Gather = quad(WithCommon(scatterer_transport_gather));
-  this->Coarsen = quad(WithCommon(scatterer_transport_coarsen));
+  this->Sweep = quad(WithCommon(scatterer_transport_sweep, variant));
+  this->Gather = quad(WithCommon(scatterer_transport_gather, variant));
+  this->Coarsen = quad(WithCommon(scatterer_transport_coarsen, variant));
   this->Diffuse = quad(scatterer_transport_diffuse);
   this->Combine = quad(scatterer_transport_combine);
   for (auto* q : { &this->Sweep, &this->Gather, &this->Coarsen, &this->Diffuse, &this->Combine })
@@ -95,9 +104,7 @@ void SetCommonUniforms(vtkShaderProgram* program, const TransportGrid& grid,
 {
   program->SetUniform4f("st_scalarScale", in.ScalarScale);
   program->SetUniform4f("st_scalarBias", in.ScalarBias);
-  program->SetUniformi("st_componentMode", in.ComponentMode);
   program->SetUniformi("st_components", in.Components);
-  program->SetUniformi("st_materialComponent", in.MaterialComponent);
   program->SetUniform4f("st_componentWeights", in.ComponentWeights);
   program->SetUniform3f("st_voxelStep", in.VoxelStep);
   program->SetUniform3f("st_gradientAspect", in.GradientAspect);

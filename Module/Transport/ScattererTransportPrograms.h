@@ -20,7 +20,7 @@ namespace scatterer_gpu
 struct SweepPlan;
 struct TransportGrid;
 
-/** The five pass programs, compiled together once per context. */
+/** The five pass programs, compiled together once per context and component rule. */
 struct TransportPrograms
 {
   std::unique_ptr<vtkOpenGLQuadHelper> Sweep;   ///< pass 1: transmittance, slice by slice
@@ -28,15 +28,23 @@ struct TransportPrograms
   std::unique_ptr<vtkOpenGLQuadHelper> Coarsen; ///< pass 3a: medium and source, coarse grid
   std::unique_ptr<vtkOpenGLQuadHelper> Diffuse; ///< pass 3: one Jacobi iteration
   std::unique_ptr<vtkOpenGLQuadHelper> Combine; ///< pass 4: coarse light added to the fine
+  std::string CreatedVariant;                   ///< the defines they were compiled with
 
   TransportPrograms();
   ~TransportPrograms();
 
-  bool IsCreated() const { return this->Sweep != nullptr; }
+  /** The defines that specialise the passes to @p inputs' component rule. */
+  static std::string Variant(const vtkScattererTransportVolume::Inputs& inputs);
 
-  /** Compiles the programs in @p window; false with @p why set (and none kept) if the
-   * OpenGL implementation refuses one. */
-  bool Create(vtkOpenGLRenderWindow* window, std::string& why);
+  /** True when the programs exist for @p variant. */
+  bool IsCreated(const std::string& variant) const
+  {
+    return this->Sweep != nullptr && this->CreatedVariant == variant;
+  }
+
+  /** Compiles the programs for @p variant in @p window (releasing any others); false
+   * with @p why set (and none kept) if the OpenGL implementation refuses one. */
+  bool Create(vtkOpenGLRenderWindow* window, const std::string& variant, std::string& why);
 
   void ReleaseGraphicsResources(vtkWindow* window);
 };

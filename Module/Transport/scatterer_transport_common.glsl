@@ -14,9 +14,7 @@
 uniform sampler3D st_volume;       // the mapper's own scalar texture (1-4 components)
 uniform vec4 st_scalarScale;       // normalised scalar = texel * scale + bias, per component
 uniform vec4 st_scalarBias;
-uniform int st_componentMode;      // how the components make the medium (ST_ONE_SCALAR ...)
 uniform int st_components;         // components of st_volume
-uniform int st_materialComponent;  // the component the material table is over
 uniform vec4 st_componentWeights;  // independent components: vtkVolumeProperty's weights
 uniform vec3 st_voxelStep;         // 2D transfer function: one texel of st_volume
 uniform vec3 st_gradientAspect;    // 2D transfer function: spacing * 2 / mean spacing per axis
@@ -40,12 +38,15 @@ uniform sampler3D st_mask;         // the mask (nearest, 8-bit): binary 0 = mask
 uniform float st_maskBlend;        // label-map mask: VTK's MaskBlendFactor
 uniform float st_mediumRows;       // rows of st_medium (1, or 256 with a label-map mask)
 
-// The component rules (vtkScattererTransportVolume::Inputs::ComponentRule).
-const int ST_ONE_SCALAR = 0;
-const int ST_INDEPENDENT = 1;
-const int ST_LUMINANCE_ALPHA = 2;
-const int ST_RGBA = 3;
-const int ST_TRANSFER_2D = 4;
+// The component rules (vtkScattererTransportVolume::Inputs::ComponentRule). The
+// program defines ST_COMPONENT_MODE (the rule) and ST_MATERIAL_COMPONENT (the component
+// the material table is over) in front of this text (ScattererTransportPrograms.cxx):
+// one program per rule, so that one scalar pays nothing for the others.
+#define ST_ONE_SCALAR 0
+#define ST_INDEPENDENT 1
+#define ST_LUMINANCE_ALPHA 2
+#define ST_RGBA 3
+#define ST_TRANSFER_2D 4
 
 vec3 st_gridToTexture(vec3 j)
 {
@@ -61,7 +62,11 @@ vec4 st_scalarsAt(vec3 t)
 // The normalised scalar that selects the material (the material table's coordinate).
 float st_scalarAt(vec3 t)
 {
-  return st_scalarsAt(t)[st_materialComponent];
+#if ST_COMPONENT_MODE == ST_ONE_SCALAR || ST_COMPONENT_MODE == ST_TRANSFER_2D
+  return clamp(texture(st_volume, t).r * st_scalarScale.x + st_scalarBias.x, 0.0, 1.0);
+#else
+  return st_scalarsAt(t)[ST_MATERIAL_COMPONENT];
+#endif
 }
 
 // Is the material at texture position t kept by the binary mask, the clipping
@@ -99,6 +104,7 @@ vec4 st_mediumRow(float s, float row)
   return texture(st_medium, vec2(s, (row + 0.5) / st_mediumRows));
 }
 
+#if ST_COMPONENT_MODE != ST_ONE_SCALAR
 // The gradient magnitude a 2D transfer function is looked up at, as VTK 9.1's ray caster
 // computes it (computeGradient): central differences of the scalar over one texel, each
 // axis divided by its spacing aspect, over a quarter of the scalar range, clamped to 1.
@@ -119,14 +125,11 @@ float st_gradientMagnitudeAt(vec3 t)
 // makes colour and opacity of them (vtkVolumeShaderComposer, 9.1).
 vec4 st_componentsMedium(vec4 s)
 {
-  if (st_componentMode == ST_LUMINANCE_ALPHA)
-  {
-    return vec4(st_mediumRow(s.x, 0.0).rgb, st_mediumRow(s.y, 1.0).a);
-  }
-  if (st_componentMode == ST_RGBA)
-  {
-    return vec4(s.rgb, st_mediumRow(s.w, 0.0).a);
-  }
+#if ST_COMPONENT_MODE == ST_LUMINANCE_ALPHA
+  return vec4(st_mediumRow(s.x, 0.0).rgb, st_mediumRow(s.y, 1.0).a);
+#elif ST_COMPONENT_MODE == ST_RGBA
+  return vec4(s.rgb, st_mediumRow(s.w, 0.0).a);
+#else
   // Independent components: VTK composites a step with opacity
   //   A = sum_c alpha_c^2 / sum_c w_c alpha_c   (numerator over components with w_c > 0)
   // and premultiplied colour sum_c w_c alpha_c rgb_c. Over a short step d,
@@ -157,7 +160,9 @@ vec4 st_componentsMedium(vec4 s)
   }
   float sigma = squares / total;
   return vec4(clamp(colour / sigma, 0.0, 1.0), sigma);
+#endif
 }
+#endif
 
 // The medium at a texture position: rgb = albedo (the colour transfer function),
 // a = extinction coefficient sigma_t per world unit in VTK's convention
@@ -170,14 +175,11 @@ vec4 st_mediumAt(vec3 t)
   {
     return vec4(0.0);
   }
-  if (st_componentMode == ST_TRANSFER_2D)
-  {
-    return texture(st_medium, vec2(st_scalarAt(t), st_gradientMagnitudeAt(t)));
-  }
-  if (st_componentMode != ST_ONE_SCALAR)
-  {
-    return st_componentsMedium(st_scalarsAt(t));
-  }
+#if ST_COMPONENT_MODE == ST_TRANSFER_2D
+  return texture(st_medium, vec2(st_scalarAt(t), st_gradientMagnitudeAt(t)));
+#elif ST_COMPONENT_MODE != ST_ONE_SCALAR
+  return st_componentsMedium(st_scalarsAt(t));
+#else
   float s = st_scalarAt(t);
   vec4 own = st_mediumRow(s, 0.0);
   if (st_labelMasked != 0)
@@ -191,6 +193,7 @@ vec4 st_mediumAt(vec3 t)
     }
   }
   return own;
+#endif
 }
 
 // The extinction that attenuates light on its way (the sweep): sigma_t times

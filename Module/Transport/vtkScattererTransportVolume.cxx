@@ -155,9 +155,10 @@ bool vtkScattererTransportVolume::Update(
     why = "the volume's placement is degenerate (zero spacing or a singular matrix)";
     return false;
   }
-  if (!s.Programs.IsCreated())
+  const std::string variant = scatterer_gpu::TransportPrograms::Variant(in);
+  if (!s.Programs.IsCreated(variant))
   {
-    if (!s.Programs.Create(window, why))
+    if (!s.Programs.Create(window, variant, why))
     {
       return false;
     }
