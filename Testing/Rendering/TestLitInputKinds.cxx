@@ -128,6 +128,28 @@ vtkSmartPointer<vtkImageData> Table2D()
   return table;
 }
 
+void SetUpMapper(vtkGPUVolumeRayCastMapper* mapper, vtkImageData* image)
+{
+  mapper->SetInputData(image);
+  mapper->AutoAdjustSampleDistancesOff();
+  mapper->SetSampleDistance(0.5);
+  mapper->UseJitteringOff();
+}
+
+// The scene's light and camera: from above and a little to the side, so that the ball's
+// shadow falls on the plate beside the ball, where the camera sees it.
+void SetUpScene(vtkRenderer* renderer)
+{
+  renderer->AutomaticLightCreationOff();
+  scatterer_testing::AddSceneLight(renderer, 0.35, 0.0, 1.0);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  const double c = 0.5 * (N - 1);
+  camera->SetFocalPoint(c, c, 14);
+  camera->SetPosition(c - 40, c - 110, 90);
+  camera->SetViewUp(0, 0, 1);
+  renderer->ResetCameraClippingRange();
+}
+
 struct Pictures
 {
   std::vector<unsigned char> Stock, Off, Lit, LitAgain;
@@ -164,26 +186,11 @@ Pictures Render(Kind kind)
   }
   vtkNew<vtkScattererTemplateVolumeMapper> ours;
   vtkNew<vtkOpenGLGPUVolumeRayCastMapper> stock;
-  for (auto* m : { static_cast<vtkGPUVolumeRayCastMapper*>(ours),
-         static_cast<vtkGPUVolumeRayCastMapper*>(stock) })
-  {
-    m->SetInputData(image);
-    m->AutoAdjustSampleDistancesOff();
-    m->SetSampleDistance(0.5);
-    m->UseJitteringOff();
-  }
   vtkNew<vtkRenderer> renderer;
   vtkVolume* volume = scatterer_examples::AddVolume(renderer, stock, property);
-  renderer->AutomaticLightCreationOff();
-  // From above and a little to the side: the ball's shadow falls on the plate beside
-  // the ball, where the camera sees it.
-  scatterer_testing::AddSceneLight(renderer, 0.35, 0.0, 1.0);
-  vtkCamera* camera = renderer->GetActiveCamera();
-  const double c = 0.5 * (N - 1);
-  camera->SetFocalPoint(c, c, 14);
-  camera->SetPosition(c - 40, c - 110, 90);
-  camera->SetViewUp(0, 0, 1);
-  renderer->ResetCameraClippingRange();
+  SetUpMapper(stock, image);
+  SetUpMapper(ours, image);
+  SetUpScene(renderer);
 
   vtkRenderWindow* window = scatterer_testing::SharedWindow();
   window->AddRenderer(renderer);
@@ -232,24 +239,11 @@ std::vector<unsigned char> RenderOneScalar(bool ours, int parts, std::string* fe
   vtkOpenGLGPUVolumeRayCastMapper* mapper = ours
     ? static_cast<vtkOpenGLGPUVolumeRayCastMapper*>(scatterer)
     : static_cast<vtkOpenGLGPUVolumeRayCastMapper*>(stock);
-  mapper->SetInputData(image);
-  mapper->AutoAdjustSampleDistancesOff();
-  mapper->SetSampleDistance(0.5);
-  mapper->UseJitteringOff();
-  if (parts > 1) // VTK 9.1 throws on SetPartitions(1, 1, 1)
-  {
-    mapper->SetPartitions(parts, parts, 1);
-  }
+  SetUpMapper(mapper, image);
+  mapper->SetPartitions(parts, parts, 1);
   vtkNew<vtkRenderer> renderer;
   scatterer_examples::AddVolume(renderer, mapper, property);
-  renderer->AutomaticLightCreationOff();
-  scatterer_testing::AddSceneLight(renderer, 0.35, 0.0, 1.0);
-  vtkCamera* camera = renderer->GetActiveCamera();
-  const double c = 0.5 * (N - 1);
-  camera->SetFocalPoint(c, c, 14);
-  camera->SetPosition(c - 40, c - 110, 90);
-  camera->SetViewUp(0, 0, 1);
-  renderer->ResetCameraClippingRange();
+  SetUpScene(renderer);
   auto pixels = scatterer_testing::RenderSceneOnce(renderer, mapper);
   if (features)
   {
