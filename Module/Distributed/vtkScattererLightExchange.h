@@ -11,8 +11,9 @@
  * 1. Each rank computes, per light, the optical depth of its own voxels along every
  *    line of the light (a light-space map; scatterer/LightSpace.h): orthographic for a
  *    directional light, octahedral around a positional one.
- * 2. The ranks exchange the maps (one AllGather through the controller ParaView
- *    already uses).
+ * 2. The ranks exchange the maps through the controller ParaView already uses, each
+ *    as the window of lines its piece crosses (an AllGather of the windows' corners,
+ *    then an AllGatherV of their depths).
  * 3. Each rank adds the maps of the pieces in front of it along each line, less
  *    their part inside its ghost layers (it has those voxels, and its own sweep
  *    crosses them), and the mapper's transport sweep multiplies the transmittance

@@ -52,9 +52,10 @@ size_t texelOf(const ls::Map& m, const glm::dvec3& p)
 }
 
 // Each piece's optical depth along the map's lines, and pointers to them.
+// Each piece's map and what it sends: its non-zero window (as the exchange does).
 struct PieceDepths {
   std::vector<std::vector<float>> maps;
-  std::vector<const float*> pointers;
+  std::vector<ls::DepthWindow> pointers;
 };
 
 PieceDepths depthsOf(const ls::Map& m, const ls::ExtinctionGrid& g,
@@ -65,7 +66,7 @@ PieceDepths depthsOf(const ls::Map& m, const ls::ExtinctionGrid& g,
     d.maps.push_back(ls::opticalDepth(m, g, b, indexToWorld, step));
   }
   for (const auto& v : d.maps) {
-    d.pointers.push_back(v.data());
+    d.pointers.push_back(ls::nonZeroWindow(v, m.size));
   }
   return d;
 }
@@ -148,7 +149,7 @@ TEST(LightSpace, ThePieceNearerTheLightIsInFront)
   for (const bool fromPlusX : { true, false }) {
     const ls::Map m = ls::directionalMap(glm::dvec3(fromPlusX ? 1 : -1, 0, 0), whole, 1.0, 64);
     const PieceDepths d = depthsOf(m, g, owned, unit, 0.5);
-    const std::vector<const float*>& depths = d.pointers;
+    const std::vector<ls::DepthWindow>& depths = d.pointers;
     const size_t texel = texelOf(m, p);
     const std::vector<float> e0 = ls::enteringDepth(m, owned, 0, owned[0], depths, g, unit, 0.5);
     const std::vector<float> e1 = ls::enteringDepth(m, owned, 1, owned[1], depths, g, unit, 0.5);
@@ -160,7 +161,7 @@ TEST(LightSpace, ThePieceNearerTheLightIsInFront)
   // and piece 1 by nothing.
   const ls::Map m = ls::positionalMap(glm::dvec3(9.0, 7.5, 7.5), 128);
   const PieceDepths d = depthsOf(m, g, owned, unit, 0.25);
-  const std::vector<const float*>& depths = d.pointers;
+  const std::vector<ls::DepthWindow>& depths = d.pointers;
   const size_t texel = texelOf(m, p);
   EXPECT_NEAR(
     ls::enteringDepth(m, owned, 0, owned[0], depths, g, unit, 0.25)[texel], 0.5 * 4.0, 0.05);
@@ -186,7 +187,7 @@ TEST(LightSpace, FourPiecesAddUpToTheWholeVolume)
   for (const ls::Map& m : maps) {
     const std::vector<float> all = ls::opticalDepth(m, g, whole, indexToWorld, 0.25);
     const PieceDepths d = depthsOf(m, g, owned, indexToWorld, 0.25);
-    const std::vector<const float*>& depths = d.pointers;
+    const std::vector<ls::DepthWindow>& depths = d.pointers;
     std::vector<ls::Box> reach;
     std::vector<std::vector<float>> entering, local;
     for (int k = 0; k < 4; ++k) {
@@ -273,4 +274,32 @@ TEST(LightSpace, ScalarsAreInterpolatedBeforeTheTransferFunction)
   EXPECT_NEAR(g.at(glm::dvec3(0.5, 0.0, 0.0)), 0.0, 1e-12);
   EXPECT_NEAR(g.at(glm::dvec3(0.875, 0.0, 0.0)), 5.0, 1e-12);
   EXPECT_NEAR(g.at(glm::dvec3(1.0, 0.0, 0.0)), 8.0, 1e-12);
+}
+
+TEST(LightSpace, DepthWindowHoldsEveryNonZeroLine)
+{
+  // A piece crosses lines (3..5, 2) and (4, 6) of an 8 x 8 map: its window is columns
+  // 3..5, rows 2..6, and the packed window reads back every line, zeros outside.
+  const int size = 8;
+  std::vector<float> map(size * size, 0.0f);
+  map[2 * size + 3] = 1.0f;
+  map[2 * size + 5] = 2.0f;
+  map[6 * size + 4] = 3.0f;
+  const ls::DepthWindow window = ls::nonZeroWindow(map, size);
+  EXPECT_EQ(window.x0, 3);
+  EXPECT_EQ(window.y0, 2);
+  EXPECT_EQ(window.width, 3);
+  EXPECT_EQ(window.height, 5);
+  const std::vector<float> packed = ls::packWindow(window);
+  ASSERT_EQ(packed.size(), 15u);
+  ls::DepthWindow sent = window;
+  sent.depth = packed.data();
+  sent.stride = window.width;
+  for (int j = 0; j < size; ++j) {
+    for (int i = 0; i < size; ++i) {
+      EXPECT_EQ(sent.at(i, j), map[static_cast<size_t>(j) * size + i]) << i << "," << j;
+    }
+  }
+  EXPECT_TRUE(ls::nonZeroWindow(std::vector<float>(size * size, 0.0f), size).empty());
+  EXPECT_THROW(ls::nonZeroWindow(map, size + 1), std::invalid_argument);
 }

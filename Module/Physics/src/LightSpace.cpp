@@ -298,8 +298,51 @@ std::vector<float> opticalDepth(const Map& map, const ExtinctionGrid& grid, cons
   return depth;
 }
 
+DepthWindow nonZeroWindow(const std::vector<float>& depth, int size)
+{
+  if (size <= 0 || depth.size() != static_cast<size_t>(size) * size) {
+    throw std::invalid_argument("lightspace::nonZeroWindow: the map is not size x size");
+  }
+  int x0 = size, y0 = size, x1 = -1, y1 = -1;
+  for (int j = 0; j < size; ++j) {
+    for (int i = 0; i < size; ++i) {
+      if (depth[static_cast<size_t>(j) * size + i] != 0.0f) {
+        x0 = std::min(x0, i);
+        x1 = std::max(x1, i);
+        y0 = std::min(y0, j);
+        y1 = std::max(y1, j);
+      }
+    }
+  }
+  DepthWindow w;
+  if (x1 < 0) {
+    return w;
+  }
+  w.depth = depth.data() + static_cast<size_t>(y0) * size + x0;
+  w.x0 = x0;
+  w.y0 = y0;
+  w.width = x1 - x0 + 1;
+  w.height = y1 - y0 + 1;
+  w.stride = size;
+  return w;
+}
+
+std::vector<float> packWindow(const DepthWindow& window)
+{
+  std::vector<float> packed;
+  if (window.empty()) {
+    return packed;
+  }
+  packed.reserve(static_cast<size_t>(window.width) * window.height);
+  for (int j = 0; j < window.height; ++j) {
+    const float* row = window.depth + static_cast<size_t>(j) * window.stride;
+    packed.insert(packed.end(), row, row + window.width);
+  }
+  return packed;
+}
+
 std::vector<float> enteringDepth(const Map& map, const std::vector<Box>& owned, int self,
-  const Box& selfReach, const std::vector<const float*>& depths, const ExtinctionGrid& grid,
+  const Box& selfReach, const std::vector<DepthWindow>& depths, const ExtinctionGrid& grid,
   const glm::dmat3& indexToWorld, double step)
 {
   if (!(step > 0.0)) {
@@ -324,14 +367,14 @@ std::vector<float> enteringDepth(const Map& map, const std::vector<Box>& owned, 
         double sum = 0.0;
         for (size_t k = 0; k < owned.size(); ++k) {
           double s0, s1;
-          if (static_cast<int>(k) == self || !depths[k] || !clip(l, owned[k], s0, s1)) {
+          if (static_cast<int>(k) == self || depths[k].empty() || !clip(l, owned[k], s0, s1)) {
             continue;
           }
           // Disjoint boxes: the one whose part of the line comes first is in front.
           if (0.5 * (s0 + s1) >= here) {
             continue;
           }
-          sum += depths[k][texel];
+          sum += depths[k].at(i, j);
           // Its part inside the reach: this piece's sweep crosses that itself.
           const double a = std::max(s0, r0), b = std::min(s1, r1);
           if (inReach && a < b) {

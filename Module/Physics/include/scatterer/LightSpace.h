@@ -117,6 +117,30 @@ struct ExtinctionGrid {
 std::vector<float> opticalDepth(const Map& map, const ExtinctionGrid& grid, const Box& owned,
   const glm::dmat3& indexToWorld, double step);
 
+// A piece's optical depths over a window of a map's lines: lines (i, j) with
+// x0 <= i < x0 + width, y0 <= j < y0 + height, row j at depth + (j - y0) * stride. The
+// piece crosses no line outside it: depth 0 there. What a piece sends the others: its
+// map's non-zero window, about size^2 / P^(2/3) lines of P pieces in a 3D split
+// instead of size^2.
+struct DepthWindow {
+  const float* depth = nullptr;
+  int x0 = 0, y0 = 0, width = 0, height = 0, stride = 0;
+  bool empty() const { return !depth || width <= 0 || height <= 0; }
+  float at(int i, int j) const
+  {
+    return empty() || i < x0 || j < y0 || i >= x0 + width || j >= y0 + height
+             ? 0.0f
+             : depth[static_cast<size_t>(j - y0) * stride + (i - x0)];
+  }
+};
+
+// The smallest window of `depth` (a size x size map, row-major) outside which every
+// value is 0; it points into `depth` (stride size). Empty when all are 0.
+DepthWindow nonZeroWindow(const std::vector<float>& depth, int size);
+
+// The window's values, row after row (width * height floats, stride width).
+std::vector<float> packWindow(const DepthWindow& window);
+
 // The optical depth in front of piece `self`'s reach on every line: what the light
 // crosses before it enters the box `selfReach` (everything the piece holds: its own
 // voxels and its ghost layers). The piece's own sweep covers the reach, so
@@ -125,10 +149,10 @@ std::vector<float> opticalDepth(const Map& map, const ExtinctionGrid& grid, cons
 //            - the depth of their matter inside selfReach (from `grid`, the piece's
 //              own copy of its ghost layers),
 // clamped at 0. Where the line misses self's owned box, the reach says where self is
-// on it; lines missing both get 0. depths[j] may be null for a piece that holds
+// on it; lines missing both get 0. depths[j] may be empty for a piece that holds
 // nothing. grid, indexToWorld and step as for opticalDepth.
 std::vector<float> enteringDepth(const Map& map, const std::vector<Box>& owned, int self,
-  const Box& selfReach, const std::vector<const float*>& depths, const ExtinctionGrid& grid,
+  const Box& selfReach, const std::vector<DepthWindow>& depths, const ExtinctionGrid& grid,
   const glm::dmat3& indexToWorld, double step);
 
 } // namespace lightspace
