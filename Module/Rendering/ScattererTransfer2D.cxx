@@ -46,12 +46,12 @@ std::string Transfer2DProblem(vtkImageData* table)
 }
 
 void TabulateTransfer2D(
-  vtkImageData* table, double sampleDistance, std::vector<float>& medium, int& width, int& rows)
+  vtkImageData* table, double sampleDistance, std::vector<float>& medium, int& rows)
 {
   int dims[3];
   table->GetDimensions(dims);
   vtkDataArray* rgba = table->GetPointData()->GetScalars();
-  width = std::min(dims[0], kMaxWidth);
+  const int width = std::min(dims[0], kMaxWidth);
   rows = std::min(dims[1], kMaxRows);
   medium.assign(static_cast<size_t>(4) * width * rows, 0.0f);
   for (int y = 0; y < rows; ++y)

@@ -21,12 +21,12 @@ namespace scatterer_render
 std::string Transfer2DProblem(vtkImageData* table);
 
 /**
- * The medium over (normalised scalar, gradient magnitude): @p rows rows of @p width
- * entries, 4 floats each (albedo rgb, sigma_t per world unit), the table's own texels
- * (at most 4096 x 1024; larger tables are sampled at the nearest texel).
+ * The medium over (normalised scalar, gradient magnitude): @p rows rows of entries of
+ * 4 floats (albedo rgb, sigma_t per world unit), the table's own texels (at most 4096 x
+ * 1024; larger tables are sampled at the nearest texel).
  */
 void TabulateTransfer2D(
-  vtkImageData* table, double sampleDistance, std::vector<float>& medium, int& width, int& rows);
+  vtkImageData* table, double sampleDistance, std::vector<float>& medium, int& rows);
 
 /**
  * What a scalar shows at its most visible gradient, over the scalar range [lo, hi]:

@@ -444,12 +444,9 @@ void TransportUpdate::UpdateTables(vtkVolume* vol, const FramePlan& plan,
   switch (t.ComponentMode)
   {
     case TransportInputs::Transfer2D: // its own table, over (scalar, gradient magnitude)
-    {
-      int width = 0;
       TabulateTransfer2D(
-        property->GetTransferFunction2D(), plan.SampleDistance, t.Medium, width, t.MediumRows);
+        property->GetTransferFunction2D(), plan.SampleDistance, t.Medium, t.MediumRows);
       break;
-    }
     case TransportInputs::Independent:
       for (int c = 0; c < t.Components; ++c)
       {

@@ -76,4 +76,19 @@ void ApplyShellBallPlateProperty(vtkVolumeProperty* property)
   property->SetSpecular(0.3);
   property->SetSpecularPower(20.0);
 }
+
+vtkSmartPointer<vtkImageData> MakeComponentVolume(
+  int dims, int components, const ComponentFill& fill)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(dims, dims, dims);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, components);
+  auto* p = static_cast<unsigned char*>(image->GetScalarPointer());
+  for (int k = 0; k < dims; ++k)
+    for (int j = 0; j < dims; ++j)
+      for (int i = 0; i < dims; ++i)
+        for (int c = 0; c < components; ++c)
+          *p++ = fill(i, j, k, c);
+  return image;
+}
 }

@@ -5,6 +5,8 @@
 
 #include "vtkSmartPointer.h"
 
+#include <functional>
+
 class vtkImageData;
 class vtkVolumeProperty;
 
@@ -21,6 +23,13 @@ vtkSmartPointer<vtkImageData> MakeShellBallPlate(int dims, int scalarType, bool 
 
 /** Transfer functions for MakeShellBallPlate: translucent shell, opaque ball, plate. */
 void ApplyShellBallPlateProperty(vtkVolumeProperty* property);
+
+/** Component c of voxel (i, j, k), 0..255. */
+using ComponentFill = std::function<unsigned char(int i, int j, int k, int c)>;
+
+/** A dims^3 unsigned-char volume of @p components components filled by @p fill. */
+vtkSmartPointer<vtkImageData> MakeComponentVolume(
+  int dims, int components, const ComponentFill& fill);
 }
 
 #endif

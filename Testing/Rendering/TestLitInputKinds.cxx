@@ -6,6 +6,7 @@
 // picture. SCATTERER_TEST_IMAGES=<dir> writes the pictures there to look at.
 #include "Common/ScattererMapperSetup.h"
 #include "ScattererRenderHarness.h"
+#include "ScattererTestVolumes.h"
 
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
@@ -54,38 +55,26 @@ bool InPlate(int, int, int k)
 vtkSmartPointer<vtkImageData> Volume(Kind kind)
 {
   const int components = kind == Kind::RGBA ? 4 : kind == Kind::Transfer2D ? 1 : 2;
-  auto image = vtkSmartPointer<vtkImageData>::New();
-  image->SetDimensions(N, N, N);
-  image->AllocateScalars(VTK_UNSIGNED_CHAR, components);
-  auto* p = static_cast<unsigned char*>(image->GetScalarPointer());
-  for (int k = 0; k < N; ++k)
-    for (int j = 0; j < N; ++j)
-      for (int i = 0; i < N; ++i)
+  return scatterer_testing::MakeComponentVolume(N, components,
+    [kind](int i, int j, int k, int c) -> unsigned char
+    {
+      const bool ball = InBall(i, j, k), plate = InPlate(i, j, k);
+      const unsigned char matter = ball || plate ? 200 : 0;
+      switch (kind)
       {
-        const bool ball = InBall(i, j, k), plate = InPlate(i, j, k);
-        const unsigned char matter = ball || plate ? 200 : 0;
-        switch (kind)
-        {
-          case Kind::Independent:
-            *p++ = ball ? 200 : 0;
-            *p++ = plate ? 200 : 0;
-            break;
-          case Kind::LuminanceAlpha: // ball bright, plate darker; alpha = matter
-            *p++ = ball ? 250 : 120;
-            *p++ = matter;
-            break;
-          case Kind::RGBA: // the colour is the data's: ball orange, plate light blue
-            *p++ = ball ? 240 : 150;
-            *p++ = ball ? 150 : 190;
-            *p++ = ball ? 40 : 230;
-            *p++ = matter;
-            break;
-          case Kind::Transfer2D:
-            *p++ = ball ? 200 : plate ? 150 : 0;
-            break;
+        case Kind::Independent: // ball in component 0, plate in component 1
+          return (c == 0 ? ball : plate) ? 200 : 0;
+        case Kind::LuminanceAlpha: // ball bright, plate darker; alpha = matter
+          return c == 0 ? (ball ? 250 : 120) : matter;
+        case Kind::RGBA:
+        { // the colour is the data's: ball orange, plate light blue
+          const unsigned char ballRgb[3] = { 240, 150, 40 }, plateRgb[3] = { 150, 190, 230 };
+          return c == 3 ? matter : ball ? ballRgb[c] : plateRgb[c];
         }
+        default: // Kind::Transfer2D
+          return ball ? 200 : plate ? 150 : 0;
       }
-  return image;
+    });
 }
 
 vtkSmartPointer<vtkPiecewiseFunction> Opacity()

@@ -3,6 +3,7 @@
 // shadow on a plate where geometry puts it; no shadow from cropped, clipped or
 // masked-out material. The transmittance is read back from the GPU (llvmpipe here).
 #include "ScattererRenderHarness.h"
+#include "ScattererTestVolumes.h"
 
 #include "vtkCamera.h"
 #include "vtkImageData.h"
@@ -42,22 +43,6 @@ vtkSmartPointer<vtkImageData> MakeVolume(int n, double spacing, const Filler& fi
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i)
         *p++ = fill(i, j, k);
-  return image;
-}
-
-// A volume of `components` components; component c of voxel (i, j, k) is fill(i, j, k, c).
-vtkSmartPointer<vtkImageData> MakeComponents(
-  int n, int components, const std::function<unsigned char(int, int, int, int)>& fill)
-{
-  auto image = vtkSmartPointer<vtkImageData>::New();
-  image->SetDimensions(n, n, n);
-  image->AllocateScalars(VTK_UNSIGNED_CHAR, components);
-  auto* p = static_cast<unsigned char*>(image->GetScalarPointer());
-  for (int k = 0; k < n; ++k)
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i)
-        for (int c = 0; c < components; ++c)
-          *p++ = fill(i, j, k, c);
   return image;
 }
 
@@ -188,7 +173,7 @@ TEST(TransportVolume, IndependentComponentsAttenuateAsVtkCompositesThem)
   for (int variant = 0; variant < 4; ++variant)
   {
     const bool both = variant == 1;
-    auto image = MakeComponents(n, 2,
+    auto image = scatterer_testing::MakeComponentVolume(n, 2,
       [both](int, int, int k, int c) -> unsigned char
       { return ((c == 1 || both) && InSlab(k)) || InFloor(k) ? 200 : 0; });
     TransportScene scene(image, 0.1);
@@ -221,7 +206,7 @@ TEST(TransportVolume, DependentComponentsTakeOpacityFromTheirLastComponent)
     // The slab in the last (opacity) component, or in the others only.
     for (bool inOpacity : { true, false })
     {
-      auto image = MakeComponents(n, components,
+      auto image = scatterer_testing::MakeComponentVolume(n, components,
         [=](int i, int j, int k, int c) -> unsigned char
         {
           // One corner voxel of 255 makes every component's range [0, 255]: VTK reads
