@@ -1,8 +1,9 @@
 // Render benchmark on the CT head scene (shared/scenes/ct-head.json): frame times of
 // stock composite, stock Phong, the light transport volume and the per-sample photon
 // test, with the camera still and orbiting under the renderer's headlight (the light
-// moves every frame, so the transport volume is rebuilt every frame), all in one
-// process after a warm-up frame each. Optionally on the CT head resampled to other
+// moves every frame, so the transport volume is rebuilt every frame), and of a
+// vtkMultiVolume (the CT head and a ball inside it), all in one process after a
+// warm-up frame each. Optionally on the CT head resampled to other
 // dimensions (the same physical extent). Writes a CSV row per configuration and a PNG
 // per configuration; the last column is the process's peak resident memory so far
 // (run one configuration per process with --only to compare memory).
@@ -22,15 +23,20 @@
 #include "vtkGenericOpenGLRenderWindow.h"
 #endif
 #include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkGPUVolumeRayCastMapper.h"
 #include "vtkImageData.h"
 #include "vtkImageResize.h"
+#include "vtkMultiVolume.h"
 #include "vtkNew.h"
+#include "vtkPiecewiseFunction.h"
 #include "vtkRenderWindow.h"
 #include "vtkRendererCollection.h"
 #include "vtkRenderer.h"
 #include "vtkScattererTemplateVolumeMapper.h"
 #include "vtkScattererTransportVolume.h"
 #include "vtkScattererVolumeReader.h"
+#include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
 #include <algorithm>
@@ -52,6 +58,7 @@ struct Config
   std::string Illumination = "transport";
   bool Orbit = false;       // headlight + camera turning 2 degrees a frame: the light moves
   bool Interactive = false; // frames as VTK's interactor asks while dragging (rate 20/s)
+  bool Multi = false;       // a vtkMultiVolume: the CT head and a ball inside it (MultiScene)
 };
 
 std::vector<Config> Configs()
@@ -64,7 +71,52 @@ std::vector<Config> Configs()
     { "transport_orbit_headlight", "template", "transport", true },
     { "transport_orbit_headlight_interactive", "template", "transport", true, true },
     { "persample_still", "template", "per-sample" },
+    { "stock_multivolume", "stock", "transport", false, false, true },
+    { "transport_multivolume_still", "template", "transport", false, false, true },
+    { "transport_multivolume_orbit_headlight", "template", "transport", true, false, true },
   };
+}
+
+// A vtkMultiVolume: the CT head (input 0) and a red ball of 48^3 voxels of 1 mm (input 1,
+// placed by its own volume inside the head, as a segmented lesion or a second scan is):
+// the transport volume spans both, on the CT head's voxel lattice.
+vtkSmartPointer<vtkMultiVolume> MultiScene(
+  vtkGPUVolumeRayCastMapper* mapper, vtkImageData* head, vtkVolumeProperty* headProperty)
+{
+  const int n = 48;
+  vtkNew<vtkImageData> ball;
+  ball->SetDimensions(n, n, n);
+  ball->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+  auto* p = static_cast<unsigned char*>(ball->GetScalarPointer());
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i, ++p)
+      {
+        const int di = i - n / 2, dj = j - n / 2, dk = k - n / 2;
+        *p = di * di + dj * dj + dk * dk <= 20 * 20 ? 255 : 0;
+      }
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(0, 0.0);
+  opacity->AddPoint(128, 0.0);
+  opacity->AddPoint(255, 0.5);
+  vtkNew<vtkColorTransferFunction> colour;
+  colour->AddRGBPoint(0, 0.9, 0.2, 0.15);
+  colour->AddRGBPoint(255, 0.9, 0.2, 0.15);
+  vtkNew<vtkVolumeProperty> ballProperty;
+  ballProperty->SetScalarOpacity(opacity);
+  ballProperty->SetColor(colour);
+  ballProperty->SetInterpolationTypeToLinear();
+  vtkNew<vtkVolume> headVolume, ballVolume;
+  headVolume->SetProperty(headProperty);
+  ballVolume->SetProperty(ballProperty);
+  ballVolume->SetPosition(122.0 - n / 2, 135.0 - n / 2, 75.0 - n / 2);
+  mapper->SetInputDataObject(0, head);
+  mapper->SetInputDataObject(1, ball);
+  auto multi = vtkSmartPointer<vtkMultiVolume>::New();
+  multi->SetMapper(mapper);
+  multi->SetVolume(headVolume, 0);
+  multi->SetVolume(ballVolume, 1);
+  return multi;
 }
 
 double Median(std::vector<double> v)
@@ -182,7 +234,7 @@ int main(int argc, char* argv[])
     csv << "volume,config,mode,illumination,orbit,interactive,shader,frames,median_ms,min_ms,"
            "max_ms,ratio_to_stock,build_ms,transport_dims,transport_gpu_mib,peak_rss_mib\n";
   }
-  double stockStill = 0.0, stockOrbit = 0.0;
+  double stockStill = 0.0, stockOrbit = 0.0, stockMulti = 0.0;
   for (const Config& config : Configs())
   {
     if (!only.empty() && ("," + only + ",").find("," + config.Name + ",") == std::string::npos)
@@ -199,7 +251,15 @@ int main(int argc, char* argv[])
     }
     vtkNew<vtkVolumeProperty> property;
     vtkNew<vtkRenderer> renderer;
-    scatterer_examples::AddVolume(renderer, mapper, property);
+    if (config.Multi)
+    {
+      renderer->AddVolume(
+        MultiScene(vtkGPUVolumeRayCastMapper::SafeDownCast(mapper), image, property));
+    }
+    else
+    {
+      scatterer_examples::AddVolume(renderer, mapper, property);
+    }
     scatterer_examples::ApplyCtHeadProperty(property);
     scatterer_examples::ApplyCtHeadCamera(renderer);
     scatterer_examples::ApplyCtHeadLight(renderer);
@@ -235,7 +295,11 @@ int main(int argc, char* argv[])
       stockStill = median;
     if (config.Name == "stock_composite_orbit")
       stockOrbit = median;
-    const double stock = config.Orbit ? stockOrbit : stockStill;
+    if (config.Name == "stock_multivolume")
+      stockMulti = median;
+    // Multi-volume frames against the stock multi-volume still frame (the stock ray
+    // caster's orbit costs what its still frame does: measured above).
+    const double stock = config.Multi ? stockMulti : config.Orbit ? stockOrbit : stockStill;
     const std::string shader = st ? st->GetLastShaderFeatures() : "stock";
     int tdims[3] = { 0, 0, 0 };
     double gpuMiB = 0.0;

@@ -3,6 +3,7 @@
 #include "ScattererIlluminationParameters.h"
 #include "ScattererTransfer2D.h"
 #include "ScattererWarnOnce.h"
+#include "vtkScattererTransportVolume.h"
 
 #include "vtkAbstractMapper.h"
 #include "vtkColorTransferFunction.h"
@@ -57,9 +58,9 @@ std::string Unsupported(
     return std::string("the ") + BlendModeName(source.BlendMode) +
       " blend mode (illumination needs composite blending)";
   }
-  if (vtkMultiVolume::SafeDownCast(vol))
+  if (vtkMultiVolume::SafeDownCast(vol) && !parameters.Transport())
   {
-    return "a vtkMultiVolume (several inputs)";
+    return "a vtkMultiVolume in per-sample mode (the transport mode lights it)";
   }
   if (vtkRectilinearGrid::SafeDownCast(source.Input))
   {
@@ -74,6 +75,45 @@ std::string Unsupported(
   {
     return "the depth pass (UseDepthPass)";
   }
+  return "";
+}
+
+// A vtkMultiVolume: each input as the ray caster composites it (one scalar through its
+// volume's 1D transfer functions), or why it cannot be lit.
+std::string PlanParts(const VolumeSource& source, FramePlan& plan)
+{
+  if (source.Parts.size() > static_cast<size_t>(vtkScattererTransportVolume::Inputs::kMaxParts))
+  {
+    return "a vtkMultiVolume of more than " +
+      std::to_string(vtkScattererTransportVolume::Inputs::kMaxParts) + " inputs";
+  }
+  for (const auto& in : source.Parts)
+  {
+    FramePlan::Part part;
+    part.Volume = in.Volume;
+    part.Image = vtkImageData::SafeDownCast(in.Input);
+    part.Scalars = part.Image
+      ? vtkAbstractMapper::GetScalars(part.Image, source.ScalarMode, source.ArrayAccessMode,
+          source.ArrayId, source.ArrayName, part.CellFlag)
+      : nullptr;
+    if (!part.Volume || !part.Volume->GetProperty() || !part.Scalars)
+    {
+      return "a vtkMultiVolume input without image scalars or a volume";
+    }
+    if (part.Scalars->GetNumberOfComponents() != 1)
+    {
+      return "multi-component scalars in a vtkMultiVolume";
+    }
+    if (part.Volume->GetProperty()->GetTransferFunctionMode() == vtkVolumeProperty::TF_2D)
+    {
+      return "2D transfer functions in a vtkMultiVolume";
+    }
+    plan.Parts.push_back(part);
+  }
+  plan.Image = plan.Parts.front().Image;
+  plan.Scalars = plan.Parts.front().Scalars;
+  plan.CellFlag = plan.Parts.front().CellFlag;
+  plan.Features.Components = scatterer_shader::Features::Scalars::One;
   return "";
 }
 
@@ -172,16 +212,24 @@ std::string FramePlanner::Plan(vtkRenderer* ren, vtkVolume* vol, const VolumeSou
       "; this volume renders as vtkOpenGLGPUVolumeRayCastMapper would.");
     return unsupported;
   }
-  plan.Image = vtkImageData::SafeDownCast(source.Input);
-  plan.Scalars = plan.Image
-    ? vtkAbstractMapper::GetScalars(plan.Image, source.ScalarMode, source.ArrayAccessMode,
-        source.ArrayId, source.ArrayName, plan.CellFlag)
-    : nullptr;
-  if (!plan.Scalars)
+  std::string components;
+  if (!source.Parts.empty())
   {
-    return "no scalars";
+    components = PlanParts(source, plan);
   }
-  const std::string components = PlanComponents(vol->GetProperty(), source, parameters, plan);
+  else
+  {
+    plan.Image = vtkImageData::SafeDownCast(source.Input);
+    plan.Scalars = plan.Image
+      ? vtkAbstractMapper::GetScalars(plan.Image, source.ScalarMode, source.ArrayAccessMode,
+          source.ArrayId, source.ArrayName, plan.CellFlag)
+      : nullptr;
+    if (!plan.Scalars)
+    {
+      return "no scalars";
+    }
+    components = PlanComponents(vol->GetProperty(), source, parameters, plan);
+  }
   if (!components.empty())
   {
     warn("Scatterer-template illumination does not apply to " + components +
@@ -219,7 +267,9 @@ std::string FramePlanner::PlanGeometry(
   int dims[3];
   image->GetSpacing(spacing);
   image->GetDimensions(dims);
-  vtkMatrix4x4* volumeMatrix = vol->GetMatrix();
+  // A vtkMultiVolume: the template radius follows its first input's voxels.
+  vtkMatrix4x4* volumeMatrix =
+    plan.Parts.empty() ? vol->GetMatrix() : plan.Parts.front().Volume->GetMatrix();
   double columnLength[3];
   for (int c = 0; c < 3; ++c)
   {
@@ -258,6 +308,10 @@ std::string FramePlanner::PlanMaterials(vtkVolume* vol, const VolumeSource& sour
   const IlluminationParameters& parameters, const PlanRequests& requests, WarnOnce& warn,
   FramePlan& plan)
 {
+  if (!plan.Parts.empty())
+  {
+    return this->PlanPartMaterials(parameters, requests, warn, plan);
+  }
   vtkVolumeProperty* property = vol->GetProperty();
   double range[2];
   plan.Scalars->GetFiniteRange(range, plan.MaterialComponent);
@@ -288,6 +342,46 @@ std::string FramePlanner::PlanMaterials(vtkVolume* vol, const VolumeSource& sour
   if (!requested.empty())
   {
     this->WarnUnassigned(materialProperty, range, warn, plan);
+  }
+  return "";
+}
+
+std::string FramePlanner::PlanPartMaterials(const IlluminationParameters& parameters,
+  const PlanRequests& requests, WarnOnce& warn, FramePlan& plan)
+{
+  plan.Materials = scatterer_scene::MaterialSet();
+  int dropped = 0;
+  for (auto& part : plan.Parts)
+  {
+    double range[2];
+    part.Scalars->GetFiniteRange(range, 0);
+    double derivation[2] = { range[0], range[1] };
+    if (parameters.MaterialDerivationRange[0] <= parameters.MaterialDerivationRange[1])
+    {
+      derivation[0] = parameters.MaterialDerivationRange[0];
+      derivation[1] = parameters.MaterialDerivationRange[1];
+    }
+    const scatterer_scene::MaterialSet own = scatterer_scene::BuildMaterials(
+      *requests.Materials, part.Volume->GetProperty(), range, derivation);
+    auto& all = plan.Materials.Materials;
+    part.FirstMaterial = static_cast<int>(all.size());
+    const int room = scatterer_scene::kMaxMaterials - part.FirstMaterial;
+    part.MaterialCount = std::min(room, static_cast<int>(own.Materials.size()));
+    all.insert(all.end(), own.Materials.begin(), own.Materials.begin() + part.MaterialCount);
+    dropped += own.Dropped + static_cast<int>(own.Materials.size()) - part.MaterialCount;
+  }
+  plan.Materials.Dropped = dropped;
+  plan.MaterialsBuilt = true;
+  plan.SpeedRatios = scatterer_scene::SpeedRatios(plan.Materials);
+  plan.OpacityRatios = scatterer_scene::OpacityRatios(plan.Materials);
+  if (plan.Materials.Materials.empty())
+  {
+    return "no material: the opacity transfer functions are below 1e-4 everywhere";
+  }
+  if (dropped > 0)
+  {
+    warn("Scatterer-template illumination handles 8 materials over all inputs; " +
+      std::to_string(dropped) + " more stay unlit.");
   }
   return "";
 }
@@ -434,7 +528,9 @@ std::string FramePlanner::PlanFeatures(vtkVolume* vol, const VolumeSource& sourc
   f.Boundary = parameters.BoundaryRefraction && f.Materials > 1 && (!automatic || indicesDiffer);
   f.Positional = plan.Lights.AnyPositional;
   f.Blend2 = !f.Transport && parameters.TemplateBlending;
+  // A vtkMultiVolume's property is its first input's, whose Shade VTK 9.1 applies to all.
   f.Phong = vol->GetProperty()->GetShade() != 0;
+  f.Parts = static_cast<int>(plan.Parts.size());
   f.LabelMask = source.Mask && source.LabelMapMask;
   if (automatic && !f.Shadow && !f.Bleed && !f.Boundary)
   {

@@ -52,6 +52,17 @@ struct FramePlan
   /// A 2D transfer function (over the scalar and its gradient magnitude) gives colour and
   /// opacity, one ray step of SampleDistance at a time (ScattererTransfer2D.h).
   bool Transfer2D = false;
+  /// A vtkMultiVolume's inputs, in the ray caster's order (its input ports, ascending);
+  /// empty for one volume. Image, Scalars and CellFlag above are the first one's.
+  struct Part
+  {
+    vtkVolume* Volume = nullptr; ///< its placement and properties
+    vtkImageData* Image = nullptr;
+    vtkDataArray* Scalars = nullptr;
+    int CellFlag = 0;
+    int FirstMaterial = 0, MaterialCount = 0; ///< its materials in Materials
+  };
+  std::vector<Part> Parts;
   double SampleDistance = 1.0; ///< the ray caster's step, world units
   double Radius = 1.0;         ///< template radius, world units
   float ToTex[3][3] = {}; ///< per-sample mode: texture offset of one radius along world x, y, z
@@ -72,6 +83,13 @@ struct VolumeSource
   double SampleDistance = 1.0; ///< vtkVolumeMapper's SampleDistance (world units)
   int ScalarMode = 0, ArrayAccessMode = 0, ArrayId = -1;
   const char* ArrayName = nullptr;
+  /// A vtkMultiVolume: each input port's data and volume, ports ascending (empty: one volume).
+  struct Part
+  {
+    vtkDataSet* Input = nullptr;
+    vtkVolume* Volume = nullptr;
+  };
+  std::vector<Part> Parts;
 };
 
 /** The materials the user asked for, and shader texts known not to compile here. */
@@ -113,6 +131,10 @@ private:
    * labels; independent components: the material component's functions). */
   vtkVolumeProperty* MaterialProperty(vtkVolumeProperty* property, bool labelMapMask,
     const double derivation[2], const FramePlan& plan);
+  /** A vtkMultiVolume: each input's materials from its own transfer functions, together
+   * at most the material limit. */
+  std::string PlanPartMaterials(const IlluminationParameters& parameters,
+    const PlanRequests& requests, WarnOnce& warn, FramePlan& plan);
   void WarnUnassigned(
     vtkVolumeProperty* property, const double range[2], WarnOnce& warn, const FramePlan& plan);
   std::string PlanFeatures(vtkVolume* volume, const VolumeSource& source,

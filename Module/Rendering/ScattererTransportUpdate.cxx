@@ -16,6 +16,7 @@
 #include "vtkPlane.h"
 #include "vtkPlaneCollection.h"
 #include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
@@ -26,6 +27,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace scatterer_render
 {
@@ -73,6 +75,34 @@ int FunctionCount(const TransportInputs& t)
   return t.ComponentMode == TransportInputs::Independent ? t.Components : 1;
 }
 
+// Where a volume texture lies: texture coordinate -> structured index -> physical
+// (origin, spacing, direction). Texel centre (i + 0.5) / N holds data point i (cell
+// data: the centre of cell i), so distances are the data's own.
+void TextureToDataset(vtkImageData* image, int cellFlag, vtkTextureObject* texture,
+  vtkMatrix4x4* texToDataset, vtkMatrix4x4* texToIndexOut)
+{
+  vtkNew<vtkMatrix4x4> texToIndex, indexToDataset;
+  int extent[6];
+  image->GetExtent(extent);
+  const unsigned int texels[3] = { texture->GetWidth(), texture->GetHeight(), texture->GetDepth() };
+  for (int a = 0; a < 3; ++a)
+  {
+    texToIndex->SetElement(a, a, texels[a]);
+    texToIndex->SetElement(a, 3, extent[2 * a] - 0.5 + (cellFlag ? 0.5 : 0.0));
+  }
+  image->ComputeIndexToPhysicalMatrix(image->GetOrigin(), image->GetSpacing(),
+    image->GetDirectionMatrix()->GetData(), indexToDataset->GetData());
+  vtkMatrix4x4::Multiply4x4(indexToDataset, texToIndex, texToDataset);
+  if (texToIndexOut)
+  {
+    texToIndexOut->DeepCopy(texToIndex);
+  }
+}
+
+// A vtkMultiVolume's box: at most this many texels along an axis (before the
+// transport's own downsampling).
+constexpr int kMaxBoxTexels = 1024;
+
 // One medium row: set @p f's functions over component @p c's range.
 void TabulateRow(float* row, vtkVolumeProperty* property, int f, const float range[2])
 {
@@ -90,6 +120,66 @@ std::string TransportUpdate::Update(vtkRenderer* ren, vtkVolume* vol, const Fram
   const IlluminationParameters& parameters, const TemplateCache& templates,
   const TransportSource& source, WarnOnce& warn, std::string& error)
 {
+  auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  vtkScattererTransportVolume::Inputs& t = this->Inputs;
+  const std::string stock = plan.Parts.empty() ? this->UpdateVolume(ren, vol, plan, source, warn)
+                                               : this->UpdateParts(plan, source);
+  if (!stock.empty())
+  {
+    return stock;
+  }
+  this->UpdateClipping(plan, source, parameters);
+
+  // The tables change with the transfer functions, the ranges, the materials, the
+  // templates and the kernel settings only: rebuilt then, not every frame, and the
+  // transport volume is told by TablesVersion.
+  const std::string key = this->TablesKey(vol, plan, parameters, templates);
+  if (this->Tables.Differs(key))
+  {
+    this->UpdateTables(vol, plan, parameters, templates);
+    this->Tables.Record(key);
+    ++t.TablesVersion;
+  }
+  // Occlusion off: nothing along a light path absorbs (OcclusionScale in world units).
+  t.OcclusionScale =
+    plan.Features.Shadow ? OcclusionScale(parameters.OcclusionStrength, 1.0) : 0.0f;
+  this->UpdateLights(plan, source, warn);
+  t.Bleed = plan.Features.Bleed;
+  t.Boundary = plan.Features.Boundary;
+  t.MultipleScattering = static_cast<float>(parameters.MultipleScattering);
+
+  // Interactive frames (a time budget under a second) build the volume coarser, but
+  // only when it must be rebuilt at all: while the user orbits under a scene light,
+  // the still frames' volume stays valid, and a coarse one would cost a build now and
+  // another when the user lets go.
+  t.Downsample = parameters.TransportScale;
+  const bool interactive = vol->GetAllocatedRenderTime() < 1.0;
+  if (interactive && !this->Transport->IsCurrent(renWin, t))
+  {
+    t.Downsample = parameters.InteractiveTransportScale;
+  }
+  if (source.Progress && !this->Transport->IsCurrent(renWin, t))
+  {
+    source.Progress(0.0);
+    this->Transport->SetProgressCallback(source.Progress);
+  }
+  else
+  {
+    this->Transport->SetProgressCallback(nullptr);
+  }
+  std::string why;
+  if (!this->Transport->Update(renWin, t, why))
+  {
+    error = "The light transport volume could not be built: " + why +
+      "; this volume renders as vtkOpenGLGPUVolumeRayCastMapper would.";
+    return "the light transport volume could not be built";
+  }
+  return "";
+}
+
+std::string TransportUpdate::UpdateVolume(vtkRenderer* ren, vtkVolume* vol, const FramePlan& plan,
+  const TransportSource& source, WarnOnce& warn)
+{
   std::string whyNot;
   vtkVolumeTexture* volumeTexture =
     this->WholeVolumeTexture(ren, vol, plan, source.VolumeTexture, whyNot);
@@ -106,6 +196,9 @@ std::string TransportUpdate::Update(vtkRenderer* ren, vtkVolume* vol, const Fram
   }
   auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
   vtkScattererTransportVolume::Inputs& t = this->Inputs;
+  this->ReadTexture = volumeTexture;
+  this->PartTextures.clear();
+  t.Parts.clear();
   t.Volume = block->TextureObject;
   vtkNew<vtkMatrix4x4> pointToCell;
   vtkMatrix4x4::Invert(volumeTexture->CellToPointMatrix, pointToCell);
@@ -144,25 +237,186 @@ std::string TransportUpdate::Update(vtkRenderer* ren, vtkVolume* vol, const Fram
     }
     t.MaskUploadTime = this->Mask.GetUploadTime();
   }
-  this->UpdateGeometry(vol, plan, source, parameters);
+  this->UpdateGeometry(vol, plan);
+  return "";
+}
 
-  // The tables change with the transfer functions, the ranges, the materials, the
-  // templates and the kernel settings only: rebuilt then, not every frame, and the
-  // transport volume is told by TablesVersion.
-  vtkVolumeProperty* property = vol->GetProperty();
+// A vtkMultiVolume. The grid lies on a box around all inputs, on the first input's voxel
+// lattice (within a budget of the inputs' texels together); each input is read through
+// its own texture -> world placement (texture = VTK's texel-centred coordinates, as for
+// one volume).
+std::string TransportUpdate::UpdateParts(const FramePlan& plan, const TransportSource& source)
+{
+  vtkScattererTransportVolume::Inputs& t = this->Inputs;
+  if (source.PartTextures.size() != plan.Parts.size())
+  {
+    return "the vtkMultiVolume's inputs are not loaded";
+  }
+  this->ReadTexture = source.PartTextures.front();
+  this->PartTextures = source.PartTextures;
+  t.Parts.assign(plan.Parts.size(), {});
+  t.Mask = nullptr;
+  t.MaskUploadTime = 0;
+  t.LabelMask = false;
+  t.ComponentMode = TransportInputs::MultiInput;
+  t.Components = 1;
+  t.MaterialComponent = 0;
+  double texelCount = 0.0;
+  std::vector<vtkSmartPointer<vtkMatrix4x4>> texToWorld;
+  for (size_t k = 0; k < plan.Parts.size(); ++k)
+  {
+    vtkVolumeTexture* texture = source.PartTextures[k];
+    const auto& parts = texture->GetPartitions();
+    vtkVolumeTexture::VolumeBlock* block = texture->GetCurrentBlock();
+    if (parts[0] * parts[1] * parts[2] != 1 || !block || !block->TextureObject)
+    {
+      return "a vtkMultiVolume input that is partitioned or not loaded";
+    }
+    const FramePlan::Part& part = plan.Parts[k];
+    auto& out = t.Parts[k];
+    out.Volume = block->TextureObject;
+    out.ScalarScale = texture->HandleLargeDataTypes ? 1.0f : texture->Scale[0];
+    out.ScalarBias = texture->HandleLargeDataTypes ? 0.0f : texture->Bias[0];
+    out.UploadTime = texture->UploadTime.GetMTime();
+    vtkNew<vtkMatrix4x4> texToDataset;
+    TextureToDataset(part.Image, part.CellFlag, out.Volume, texToDataset, nullptr);
+    texToWorld.push_back(vtkSmartPointer<vtkMatrix4x4>::New());
+    vtkMatrix4x4::Multiply4x4(part.Volume->GetMatrix(), texToDataset, texToWorld.back());
+    texelCount += static_cast<double>(out.Volume->GetWidth()) * out.Volume->GetHeight() *
+      out.Volume->GetDepth();
+  }
+  if (std::abs(texToWorld.front()->Determinant()) <= 0.0)
+  {
+    return "a vtkMultiVolume input with zero spacing";
+  }
+  // The box is laid along the first input's texture axes (a CT and its segmentations
+  // share them, and the light then follows their voxels with no staircase), stretched
+  // over every input's data points in those coordinates.
+  vtkNew<vtkMatrix4x4> worldToFirst;
+  vtkMatrix4x4::Invert(texToWorld.front(), worldToFirst);
+  double lo[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
+  double hi[3] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  for (size_t k = 0; k < texToWorld.size(); ++k)
+  {
+    // The corners of the input's data points (texel centres; the first input's own
+    // extent then gives the grid it gets alone).
+    const unsigned int texels[3] = { t.Parts[k].Volume->GetWidth(), t.Parts[k].Volume->GetHeight(),
+      t.Parts[k].Volume->GetDepth() };
+    for (int corner = 0; corner < 8; ++corner)
+    {
+      double p[4] = { 0.0, 0.0, 0.0, 1.0 };
+      for (int a = 0; a < 3; ++a)
+      {
+        const double n = std::max(1u, texels[a]);
+        p[a] = (corner >> a & 1) ? 1.0 - 0.5 / n : 0.5 / n;
+      }
+      texToWorld[k]->MultiplyPoint(p, p);
+      worldToFirst->MultiplyPoint(p, p);
+      for (int a = 0; a < 3; ++a)
+      {
+        lo[a] = std::min(lo[a], p[a] / p[3]);
+        hi[a] = std::max(hi[a], p[a] / p[3]);
+      }
+    }
+  }
+  // The box's texels lie on the first input's voxel lattice, every `stride`-th one: where
+  // the inputs share that lattice (a volume and its segmentations), each is lit as it
+  // would be alone. The stride is the smallest that keeps the box within twice the texels
+  // the inputs have together (room for the space between them; a small input far from a
+  // large one does not multiply the cost).
+  const unsigned int firstTexels[3] = { t.Parts.front().Volume->GetWidth(),
+    t.Parts.front().Volume->GetHeight(), t.Parts.front().Volume->GetDepth() };
+  double first[3], last[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    first[a] = std::floor(lo[a] * firstTexels[a] - 0.5 + 1e-6);
+    last[a] = std::ceil(hi[a] * firstTexels[a] - 0.5 - 1e-6);
+  }
+  int stride = 1;
+  const auto count = [&](int a, int m)
+  { return static_cast<int>(std::ceil((last[a] - m * std::floor(first[a] / m)) / m)) + 1; };
+  while ((static_cast<double>(count(0, stride)) * count(1, stride) * count(2, stride) >
+             2.0 * std::max(texelCount, 8.0) ||
+           std::max({ count(0, stride), count(1, stride), count(2, stride) }) > kMaxBoxTexels) &&
+    stride < kMaxBoxTexels)
+  {
+    ++stride;
+  }
+  // Box texel j (centre (j + 0.5) / n) is the first input's texel i0 + j * stride.
+  vtkNew<vtkMatrix4x4> boxToFirst, boxToWorld;
+  for (int a = 0; a < 3; ++a)
+  {
+    const double i0 = stride * std::floor(first[a] / stride);
+    const int n = count(a, stride);
+    t.BoxTexels[a] = n;
+    t.IndexOrigin[a] = static_cast<int>(i0) / stride; // the grid keeps to this lattice too
+    boxToFirst->SetElement(a, a, static_cast<double>(n) * stride / firstTexels[a]);
+    boxToFirst->SetElement(a, 3, (i0 - 0.5 * stride + 0.5) / firstTexels[a]);
+  }
+  vtkMatrix4x4::Multiply4x4(texToWorld.front(), boxToFirst, boxToWorld);
+  for (size_t k = 0; k < plan.Parts.size(); ++k)
+  {
+    vtkNew<vtkMatrix4x4> worldToTex, boxToTex;
+    vtkMatrix4x4::Invert(texToWorld[k], worldToTex);
+    vtkMatrix4x4::Multiply4x4(worldToTex, boxToWorld, boxToTex);
+    for (int i = 0; i < 16; ++i)
+    {
+      t.Parts[k].BoxToTexture[i] = boxToTex->GetElement(i / 4, i % 4);
+    }
+  }
+  // The grid's "volume texture" is the box; part 0's texture stands in where a pass
+  // binds the volume (nothing reads it).
+  t.Volume = t.Parts.front().Volume;
+  t.VolumeUploadTime = 0;
+  for (int c = 0; c < 4; ++c)
+  {
+    t.ScalarScale[c] = 1.0f;
+    t.ScalarBias[c] = 0.0f;
+  }
+  this->VolumeTextureToDataset->DeepCopy(boxToWorld);
+  for (int i = 0; i < 16; ++i)
+  {
+    t.TexToWorld[i] = boxToWorld->GetElement(i / 4, i % 4);
+    t.TexToDataset[i] = t.TexToWorld[i];
+    t.TexToIndex[i] = (i % 5 == 0) ? 1.0 : 0.0;
+  }
+  return "";
+}
+
+std::string TransportUpdate::TablesKey(vtkVolume* vol, const FramePlan& plan,
+  const IlluminationParameters& parameters, const TemplateCache& templates) const
+{
+  const vtkScattererTransportVolume::Inputs& t = this->Inputs;
   KeyWriter key;
   key << t.ComponentMode << '|' << t.MaterialComponent;
-  for (int f = 0; f < FunctionCount(t); ++f)
+  // The functions and ranges of each medium row's source: the volume's property (one set
+  // per independent component), or each input's of a vtkMultiVolume.
+  const auto addFunctions = [&key](vtkVolumeProperty* property, int f)
   {
     const bool gray = property->GetColorChannels(f) == 1;
     key << '|' << property->GetScalarOpacity(f)->GetMTime() << ','
         << (gray ? property->GetGrayTransferFunction(f)->GetMTime()
                  : property->GetRGBTransferFunction(f)->GetMTime())
         << ',' << gray << ',' << UnitDistance(property, f);
-  }
-  for (int c = 0; c < t.Components; ++c)
+  };
+  vtkVolumeProperty* property = vol->GetProperty();
+  if (plan.Parts.empty())
   {
-    key << '|' << volumeTexture->ScalarRange[c][0] << ',' << volumeTexture->ScalarRange[c][1];
+    for (int f = 0; f < FunctionCount(t); ++f)
+    {
+      addFunctions(property, f);
+    }
+    for (int c = 0; c < t.Components; ++c)
+    {
+      key << '|' << this->ReadTexture->ScalarRange[c][0] << ','
+          << this->ReadTexture->ScalarRange[c][1];
+    }
+  }
+  for (size_t k = 0; k < plan.Parts.size(); ++k)
+  {
+    addFunctions(plan.Parts[k].Volume->GetProperty(), 0);
+    key << '|' << this->PartTextures[k]->ScalarRange[0][0] << ','
+        << this->PartTextures[k]->ScalarRange[0][1];
   }
   if (plan.Transfer2D)
   {
@@ -190,47 +444,7 @@ std::string TransportUpdate::Update(vtkRenderer* ren, vtkVolume* vol, const Fram
         << m.OpacityPerUnit << ',' << m.Physics.refractiveIndex << ',' << m.Physics.diffuse.x << ','
         << m.Physics.diffuse.y << ',' << m.Physics.diffuse.z;
   }
-  if (this->Tables.Differs(key.Key()))
-  {
-    this->UpdateTables(vol, plan, parameters, templates, volumeTexture->ScalarRange);
-    this->Tables.Record(key.Key());
-    ++t.TablesVersion;
-  }
-  // Occlusion off: nothing along a light path absorbs (OcclusionScale in world units).
-  t.OcclusionScale =
-    plan.Features.Shadow ? OcclusionScale(parameters.OcclusionStrength, 1.0) : 0.0f;
-  this->UpdateLights(plan, source, warn);
-  t.Bleed = plan.Features.Bleed;
-  t.Boundary = plan.Features.Boundary;
-  t.MultipleScattering = static_cast<float>(parameters.MultipleScattering);
-
-  // Interactive frames (a time budget under a second) build the volume coarser, but
-  // only when it must be rebuilt at all: while the user orbits under a scene light,
-  // the still frames' volume stays valid, and a coarse one would cost a build now and
-  // another when the user lets go.
-  t.Downsample = parameters.TransportScale;
-  const bool interactive = vol->GetAllocatedRenderTime() < 1.0;
-  if (interactive && !this->Transport->IsCurrent(renWin, t))
-  {
-    t.Downsample = parameters.InteractiveTransportScale;
-  }
-  if (source.Progress && !this->Transport->IsCurrent(renWin, t))
-  {
-    source.Progress(0.0);
-    this->Transport->SetProgressCallback(source.Progress);
-  }
-  else
-  {
-    this->Transport->SetProgressCallback(nullptr);
-  }
-  std::string why;
-  if (!this->Transport->Update(renWin, t, why))
-  {
-    error = "The light transport volume could not be built: " + why +
-      "; this volume renders as vtkOpenGLGPUVolumeRayCastMapper would.";
-    return "the light transport volume could not be built";
-  }
-  return "";
+  return key.Key();
 }
 
 vtkVolumeTexture* TransportUpdate::WholeVolumeTexture(vtkRenderer* ren, vtkVolume* vol,
@@ -321,34 +535,30 @@ void TransportUpdate::UpdateComponents(vtkVolume* vol, const FramePlan& plan)
   }
 }
 
-void TransportUpdate::UpdateGeometry(vtkVolume* vol, const FramePlan& plan,
-  const TransportSource& source, const IlluminationParameters& parameters)
+void TransportUpdate::UpdateGeometry(vtkVolume* vol, const FramePlan& plan)
 {
   vtkScattererTransportVolume::Inputs& t = this->Inputs;
-  vtkTextureObject* texture = t.Volume;
-  // Texture coordinate -> structured index -> physical (origin, spacing, direction)
-  // -> world (the volume's matrix). Texel centre (i + 0.5) / N holds data point i
-  // (cell data: the centre of cell i), so distances are the data's own.
-  vtkNew<vtkMatrix4x4> texToIndex, indexToDataset, texToDataset, texToWorld;
+  vtkNew<vtkMatrix4x4> texToIndex, texToDataset, texToWorld;
+  TextureToDataset(plan.Image, plan.CellFlag, t.Volume, texToDataset, texToIndex);
+  vtkMatrix4x4::Multiply4x4(vol->GetMatrix(), texToDataset, texToWorld);
   int extent[6];
   plan.Image->GetExtent(extent);
-  const unsigned int texels[3] = { texture->GetWidth(), texture->GetHeight(), texture->GetDepth() };
   for (int a = 0; a < 3; ++a)
   {
-    texToIndex->SetElement(a, a, texels[a]);
-    texToIndex->SetElement(a, 3, extent[2 * a] - 0.5 + (plan.CellFlag ? 0.5 : 0.0));
     t.IndexOrigin[a] = extent[2 * a];
   }
-  plan.Image->ComputeIndexToPhysicalMatrix(plan.Image->GetOrigin(), plan.Image->GetSpacing(),
-    plan.Image->GetDirectionMatrix()->GetData(), indexToDataset->GetData());
-  vtkMatrix4x4::Multiply4x4(indexToDataset, texToIndex, texToDataset);
-  vtkMatrix4x4::Multiply4x4(vol->GetMatrix(), texToDataset, texToWorld);
   for (int i = 0; i < 16; ++i)
   {
     t.TexToWorld[i] = texToWorld->GetElement(i / 4, i % 4);
     t.TexToDataset[i] = texToDataset->GetElement(i / 4, i % 4);
     t.TexToIndex[i] = texToIndex->GetElement(i / 4, i % 4);
   }
+}
+
+void TransportUpdate::UpdateClipping(
+  const FramePlan& plan, const TransportSource& source, const IlluminationParameters& parameters)
+{
+  vtkScattererTransportVolume::Inputs& t = this->Inputs;
   t.ClipPlanes.clear();
   if (vtkPlaneCollection* planes = source.ClippingPlanes)
   {
@@ -363,7 +573,8 @@ void TransportUpdate::UpdateGeometry(vtkVolume* vol, const FramePlan& plan,
           static_cast<float>(-(n[0] * o[0] + n[1] * o[1] + n[2] * o[2])) });
     }
   }
-  t.Cropping = source.Cropping && !parameters.CroppedMatterCastsShadows;
+  // VTK 9.1 does not crop a vtkMultiVolume.
+  t.Cropping = source.Cropping && !parameters.CroppedMatterCastsShadows && plan.Parts.empty();
   t.CropFlags = source.CropFlags;
   for (int a = 0; a < 3; ++a)
   {
@@ -426,10 +637,92 @@ void TransportUpdate::UpdateLights(
 }
 
 void TransportUpdate::UpdateTables(vtkVolume* vol, const FramePlan& plan,
-  const IlluminationParameters& parameters, const TemplateCache& templates,
-  const float ranges[4][2])
+  const IlluminationParameters& parameters, const TemplateCache& templates)
 {
   TransportInputs& t = this->Inputs;
+  // The ScalarOpacityUnitDistance each material's extinction is per.
+  std::vector<double> units(plan.Materials.Materials.size(), 1.0);
+  if (!plan.Parts.empty())
+  {
+    this->UpdatePartTables(plan);
+    for (const auto& part : plan.Parts)
+    {
+      std::fill_n(units.begin() + part.FirstMaterial, part.MaterialCount,
+        UnitDistance(part.Volume->GetProperty(), 0));
+    }
+  }
+  else
+  {
+    this->UpdateVolumeTables(vol, plan);
+    std::fill(units.begin(), units.end(),
+      UnitDistance(vol->GetProperty(), FunctionCount(t) > 1 ? t.MaterialComponent : 0));
+  }
+  // Materials and their kernels: the merged templates, in the material's mean free
+  // paths (scatterer/Transport.h), at most one template radius.
+  const auto& mats = plan.Materials.Materials;
+  const auto& raw = templates.GetRawTemplates();
+  t.KernelWidth = std::max(1, parameters.PhotonCap);
+  t.MaterialColors.clear();
+  t.Kernels.clear();
+  for (size_t m = 0; m < mats.size(); ++m)
+  {
+    const auto& material = mats[m];
+    const glm::vec3 c = material.Physics.diffuse;
+    t.MaterialColors.insert(t.MaterialColors.end(), { c.x, c.y, c.z });
+    const double sigma = scatterer::extinctionFromOpacity(material.OpacityPerUnit, units[m]);
+    std::vector<scatterer::KernelPhoton> kernel;
+    if (m < raw.size())
+    {
+      kernel = scatterer::mergedKernel(
+        raw[m], t.KernelWidth, scatterer::kernelRadius(material.Physics, sigma, 0.0, plan.Radius));
+    }
+    for (int k = 0; k < t.KernelWidth; ++k)
+    {
+      const bool has = k < static_cast<int>(kernel.size());
+      t.Kernels.insert(t.Kernels.end(),
+        { has ? kernel[k].offset.x : 0.0f, has ? kernel[k].offset.y : 0.0f,
+          has ? kernel[k].offset.z : 0.0f, has ? kernel[k].weight : 0.0f });
+    }
+  }
+  t.SpeedRatios = plan.SpeedRatios;
+  t.OpacityRatios = plan.OpacityRatios;
+}
+
+void TransportUpdate::UpdatePartTables(const FramePlan& plan)
+{
+  // Row k of the medium and of the material table: input k's functions over its own
+  // texture's range (as VTK's tables span it); its materials numbered after the
+  // inputs' before it.
+  TransportInputs& t = this->Inputs;
+  const int rows = static_cast<int>(plan.Parts.size());
+  t.MediumRows = rows;
+  t.MaterialRows = rows;
+  t.Medium.assign(static_cast<size_t>(4) * kMediumTableSize * rows, 0.0f);
+  t.MaterialTable.assign(static_cast<size_t>(kMediumTableSize) * rows, -1.0f);
+  for (int k = 0; k < rows; ++k)
+  {
+    const FramePlan::Part& part = plan.Parts[k];
+    const float* range = this->PartTextures[k]->ScalarRange[0];
+    TabulateRow(t.Medium.data() + static_cast<size_t>(4) * kMediumTableSize * k,
+      part.Volume->GetProperty(), 0, range);
+    scatterer_scene::MaterialSet own;
+    own.Materials.assign(plan.Materials.Materials.begin() + part.FirstMaterial,
+      plan.Materials.Materials.begin() + part.FirstMaterial + part.MaterialCount);
+    const double tableRange[2] = { range[0], range[1] };
+    const std::vector<float> table =
+      scatterer_scene::MaterialTable(own, tableRange, kMediumTableSize);
+    for (int i = 0; i < kMediumTableSize; ++i)
+    {
+      t.MaterialTable[static_cast<size_t>(kMediumTableSize) * k + i] =
+        table[i] >= 0.0f ? table[i] + static_cast<float>(part.FirstMaterial) : -1.0f;
+    }
+  }
+}
+
+void TransportUpdate::UpdateVolumeTables(vtkVolume* vol, const FramePlan& plan)
+{
+  TransportInputs& t = this->Inputs;
+  const float(*ranges)[2] = this->ReadTexture->ScalarRange;
   vtkVolumeProperty* property = vol->GetProperty();
   // The medium over the table coordinate (VTK's tables span each component's range):
   // albedo from the colour transfer function, extinction from the opacity transfer
@@ -482,35 +775,7 @@ void TransportUpdate::UpdateTables(vtkVolume* vol, const FramePlan& plan,
   }
   const double tableRange[2] = { lo, hi };
   t.MaterialTable = scatterer_scene::MaterialTable(plan.Materials, tableRange, kMediumTableSize);
-  // Materials and their kernels: the merged templates, in the material's mean free
-  // paths (scatterer/Transport.h), at most one template radius.
-  const auto& mats = plan.Materials.Materials;
-  const auto& raw = templates.GetRawTemplates();
-  t.KernelWidth = std::max(1, parameters.PhotonCap);
-  t.MaterialColors.clear();
-  t.Kernels.clear();
-  for (size_t m = 0; m < mats.size(); ++m)
-  {
-    const auto& material = mats[m];
-    const glm::vec3 c = material.Physics.diffuse;
-    t.MaterialColors.insert(t.MaterialColors.end(), { c.x, c.y, c.z });
-    const double sigma = scatterer::extinctionFromOpacity(material.OpacityPerUnit, unit);
-    std::vector<scatterer::KernelPhoton> kernel;
-    if (m < raw.size())
-    {
-      kernel = scatterer::mergedKernel(
-        raw[m], t.KernelWidth, scatterer::kernelRadius(material.Physics, sigma, 0.0, plan.Radius));
-    }
-    for (int k = 0; k < t.KernelWidth; ++k)
-    {
-      const bool has = k < static_cast<int>(kernel.size());
-      t.Kernels.insert(t.Kernels.end(),
-        { has ? kernel[k].offset.x : 0.0f, has ? kernel[k].offset.y : 0.0f,
-          has ? kernel[k].offset.z : 0.0f, has ? kernel[k].weight : 0.0f });
-    }
-  }
-  t.SpeedRatios = plan.SpeedRatios;
-  t.OpacityRatios = plan.OpacityRatios;
+  t.MaterialRows = 1;
 }
 
 void TransportUpdate::ReleaseGraphicsResources(vtkWindow* window)

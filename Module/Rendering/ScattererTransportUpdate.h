@@ -21,6 +21,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 class vtkColorTransferFunction;
 class vtkImageData;
@@ -54,6 +55,8 @@ void TabulateMedium(float* row, vtkColorTransferFunction* color, vtkPiecewiseFun
 struct TransportSource
 {
   vtkVolumeTexture* VolumeTexture = nullptr; ///< the ray caster's own, loaded (PreLoadData)
+  /// A vtkMultiVolume: the ray caster's texture of each input, in its order (the plan's Parts).
+  std::vector<vtkVolumeTexture*> PartTextures;
   vtkImageData* Mask = nullptr;
   float MaskBlend = 1.0f;
   vtkPlaneCollection* ClippingPlanes = nullptr;
@@ -108,17 +111,31 @@ private:
    */
   vtkVolumeTexture* WholeVolumeTexture(vtkRenderer* renderer, vtkVolume* volume,
     const FramePlan& plan, vtkVolumeTexture* rayCaster, std::string& why);
-  /** Where the volume texture lies (texture -> dataset -> world) and what clips it. */
-  void UpdateGeometry(vtkVolume* volume, const FramePlan& plan, const TransportSource& source,
-    const IlluminationParameters& parameters);
+  /** The volume texture, its scale and bias, components and mask; "" or why not. */
+  std::string UpdateVolume(vtkRenderer* renderer, vtkVolume* volume, const FramePlan& plan,
+    const TransportSource& source, WarnOnce& warn);
+  /** A vtkMultiVolume: each input's texture and placement in the box around them; "" or
+   * why not. */
+  std::string UpdateParts(const FramePlan& plan, const TransportSource& source);
+  /** Where the volume texture lies (texture -> dataset -> world). */
+  void UpdateGeometry(vtkVolume* volume, const FramePlan& plan);
+  /** The clipping planes and the cropping region. */
+  void UpdateClipping(
+    const FramePlan& plan, const TransportSource& source, const IlluminationParameters& parameters);
+  /** The key of the medium, material and kernel tables' inputs. */
+  std::string TablesKey(vtkVolume* volume, const FramePlan& plan,
+    const IlluminationParameters& parameters, const TemplateCache& templates) const;
   /** The plan's lights; with an exchange made for them, the depth in front of the piece. */
   void UpdateLights(const FramePlan& plan, const TransportSource& source, WarnOnce& warn);
   /** How the medium comes from the volume's components (the plan's rule). */
   void UpdateComponents(vtkVolume* volume, const FramePlan& plan);
   /** The medium, material and kernel tables, over the volume texture's scalar ranges. */
   void UpdateTables(vtkVolume* volume, const FramePlan& plan,
-    const IlluminationParameters& parameters, const TemplateCache& templates,
-    const float ranges[4][2]);
+    const IlluminationParameters& parameters, const TemplateCache& templates);
+  /** The medium rows (per rule) and the material table of one volume. */
+  void UpdateVolumeTables(vtkVolume* volume, const FramePlan& plan);
+  /** A vtkMultiVolume's medium rows and material table rows, one per input. */
+  void UpdatePartTables(const FramePlan& plan);
 
   // The light transport volume (owns its textures and build key).
   vtkNew<vtkScattererTransportVolume> Transport;
@@ -130,8 +147,13 @@ private:
   vtkNew<vtkVolumeTexture> WholeVolume;
   ChangeKey WholeVolumeKey;
   // The texel -> dataset matrix of the texture the transport read (VTK's texture ->
-  // dataset after its cell-to-point offset is undone).
+  // dataset after its cell-to-point offset is undone); for a vtkMultiVolume the box's
+  // texel -> world matrix (the ray caster's lookup starts from the world there).
   vtkNew<vtkMatrix4x4> VolumeTextureToDataset;
+  // The texture the transport read (the tables span its scalar ranges), and a
+  // vtkMultiVolume's, one per input.
+  vtkVolumeTexture* ReadTexture = nullptr;
+  std::vector<vtkVolumeTexture*> PartTextures;
   // What the transport volume is built from (kept between frames for the tables).
   vtkScattererTransportVolume::Inputs Inputs;
   ChangeKey Tables;

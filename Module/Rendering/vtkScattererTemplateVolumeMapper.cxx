@@ -18,6 +18,7 @@
 #include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
 #include "vtkImageData.h"
+#include "vtkMultiVolume.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
@@ -378,6 +379,17 @@ std::string vtkScattererTemplateVolumeMapper::PlanFrame(vtkRenderer* ren, vtkVol
   source.ArrayAccessMode = this->ArrayAccessMode;
   source.ArrayId = this->ArrayId;
   source.ArrayName = this->ArrayName;
+  // A vtkMultiVolume: each input in the ray caster's order (its ports, ascending).
+  if (auto* multi = vtkMultiVolume::SafeDownCast(vol))
+  {
+    std::vector<int> ports(this->Ports);
+    std::sort(ports.begin(), ports.end());
+    for (int port : ports)
+    {
+      source.Parts.push_back(
+        { vtkDataSet::SafeDownCast(this->GetInputDataObject(port, 0)), multi->GetVolume(port) });
+    }
+  }
   scatterer_render::PlanRequests requests;
   requests.Materials = &in.Requested;
   requests.ExtraGLSL = in.ExtraGLSL;
@@ -407,9 +419,16 @@ std::string vtkScattererTemplateVolumeMapper::UpdateTransport(vtkRenderer* ren, 
   // ray caster does next on a first frame. Sorting the blocks now, as drawing does first,
   // makes that reload safe.
   const auto& parts = source.VolumeTexture->GetPartitions();
-  if (parts[0] * parts[1] * parts[2] > 1)
+  if (parts[0] * parts[1] * parts[2] > 1 && plan.Parts.empty())
   {
     source.VolumeTexture->SortBlocksBackToFront(ren, vol->GetMatrix());
+  }
+  if (!plan.Parts.empty())
+  {
+    for (auto& input : this->AssembledInputs)
+    {
+      source.PartTextures.push_back(input.second.Texture);
+    }
   }
   source.Mask = this->GetMaskInput();
   source.MaskBlend = this->GetMaskBlendFactor();

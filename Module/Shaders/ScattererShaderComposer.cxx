@@ -6,6 +6,7 @@
 #include "scatterer_illumination_dec.h"
 #include "scatterer_shading_impl.h"
 #include "scatterer_shading_init.h"
+#include "scatterer_shading_part.h"
 
 #include <sstream>
 #include <stdexcept>
@@ -19,7 +20,7 @@ bool Features::operator==(const Features& o) const
     this->Thin == o.Thin && this->Bleed == o.Bleed && this->Boundary == o.Boundary &&
     this->Positional == o.Positional && this->Blend2 == o.Blend2 && this->Phong == o.Phong &&
     this->Transport == o.Transport && this->LabelMask == o.LabelMask &&
-    this->Components == o.Components;
+    this->Components == o.Components && this->Parts == o.Parts;
 }
 
 std::string Features::Describe() const
@@ -38,6 +39,10 @@ std::string Features::Describe() const
     {
       out << " " << n.second;
     }
+  }
+  if (this->Parts > 0)
+  {
+    out << " parts=" << this->Parts;
   }
   return out.str();
 }
@@ -115,7 +120,7 @@ std::map<std::string, bool> Flags(const Features& f)
     { "FETCH", f.Shadow || f.Bleed || (f.Boundary && f.Materials > 1) },
     { "TRANSPORT", f.Transport }, { "PERSAMPLE", !f.Transport }, { "LABELMASK", f.LabelMask },
     { "INDEPENDENT", f.Components == Features::Scalars::Independent },
-    { "DEPENDENT", f.Components == Features::Scalars::Dependent } };
+    { "DEPENDENT", f.Components == Features::Scalars::Dependent }, { "MULTI", f.Parts > 0 } };
 }
 
 // Limits, not the scene's counts, except the light slots (scatterer_illumination_dec.glsl).
@@ -155,6 +160,25 @@ std::string ShadingInitialization(const Features& features)
 
 std::string ShadingImplementation(const Features& features)
 {
-  return Preprocess(scatterer_shading_impl, Flags(features), Values(features));
+  if (features.Parts <= 0)
+  {
+    return Preprocess(scatterer_shading_impl, Flags(features), Values(features));
+  }
+  // A vtkMultiVolume: VTK 9.1 numbers its inputs' samplers and transfer functions from 0
+  // and their matrices from 1 (entry 0 is the box around them all).
+  std::string text =
+    "    // Composite step of a vtkMultiVolume with scatterer-template illumination.\n"
+    "    if (!g_skip)\n"
+    "      {\n"
+    "      vec3 texPos;\n";
+  const auto flags = Flags(features);
+  for (int part = 0; part < features.Parts; ++part)
+  {
+    auto values = Values(features);
+    values["PART"] = std::to_string(part);
+    values["MATRIX"] = std::to_string(part + 1);
+    text += Preprocess(scatterer_shading_part, flags, values);
+  }
+  return text + "      }\n";
 }
 }

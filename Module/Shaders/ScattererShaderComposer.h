@@ -39,6 +39,8 @@ struct SCATTERERTEMPLATE_EXPORT Features
     Dependent
   };
   Scalars Components = Scalars::One;
+  /// A vtkMultiVolume: its inputs (0: one volume), each composited as VTK does.
+  int Parts = 0;
 
   bool operator==(const Features& o) const;
   bool operator!=(const Features& o) const { return !(*this == o); }
@@ -70,7 +72,8 @@ SCATTERERTEMPLATE_EXPORT std::string IlluminationDeclarations(const Features& fe
 /** Per-ray variables, inserted at `//VTK::Shading::Init` (VTK's text kept). */
 SCATTERERTEMPLATE_EXPORT std::string ShadingInitialization(const Features& features);
 
-/** The per-sample composite code that replaces `//VTK::Shading::Impl`. */
+/** The per-sample composite code that replaces `//VTK::Shading::Impl` (a vtkMultiVolume:
+ * one block per input, in VTK's order). */
 SCATTERERTEMPLATE_EXPORT std::string ShadingImplementation(const Features& features);
 }
 

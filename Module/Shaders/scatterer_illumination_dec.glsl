@@ -19,10 +19,24 @@
 #define ST_MAX_MATERIALS @MAX_MATERIALS@
 
 //ST::IF TRANSPORT
-// Light above this level is compressed smoothly toward 1 (scatterer_shading_impl.glsl).
+// Light above this level is compressed smoothly toward 1 (st_receivedLight).
 // 0.7 keeps the CT head's mean lit luminance at stock Phong's (measured 1.02x) and
 // clips no pixel (docs/rendering.md).
 const float st_knee = 0.7;
+mat4 st_toTransport; // ray position -> light texture, set once per ray (shading init)
+
+// The light transport volume: the light the point at ray position `dataPos` receives,
+// summed over the lights (global shadows, template in-scattering, multiple scattering,
+// VTK's ambient term occluded like the light): one texture read.
+vec3 st_receivedLight(vec3 dataPos)
+{
+  vec3 light = texture3D(st_transport, (st_toTransport * vec4(dataPos, 1.0)).xyz).rgb;
+  // Highlight compression: light above st_knee approaches 1 smoothly instead of
+  // clipping (multiple scattering makes dense, white materials glow well above
+  // what a display shows); below it the light is kept as it is.
+  return mix(light, st_knee + (light - st_knee) / (1.0 + (light - st_knee) / (1.0 - st_knee)),
+    step(vec3(st_knee), light));
+}
 //ST::ENDIF
 
 //ST::IF PERSAMPLE

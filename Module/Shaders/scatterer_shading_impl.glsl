@@ -80,12 +80,7 @@
         // The light transport volume: the light this point receives, summed over
         // the lights (global shadows, template in-scattering, multiple scattering,
         // VTK's ambient term occluded like the light): one texture read.
-        st_F = texture3D(st_transport, (st_toTransport * vec4(g_dataPos, 1.0)).xyz).rgb;
-        // Highlight compression: light above st_knee approaches 1 smoothly instead of
-        // clipping (multiple scattering makes dense, white materials glow well above
-        // what a display shows); below it the light is kept as it is.
-        st_F = mix(st_F, st_knee + (st_F - st_knee) / (1.0 + (st_F - st_knee) / (1.0 - st_knee)),
-          step(vec3(st_knee), st_F));
+        st_F = st_receivedLight(g_dataPos);
 //ST::ENDIF
 //ST::IF PERSAMPLE
         // A loop of 0 or 1 iterations rather than an if: a GPU skips a loop no

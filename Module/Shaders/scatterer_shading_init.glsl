@@ -7,12 +7,19 @@
   vec3 st_F = vec3(1.0);
   vec3 st_B = vec3(0.0);
 //ST::IF TRANSPORT
+//ST::IF MULTI
+  // A vtkMultiVolume: g_dataPos is the texture coordinate of the box around its inputs;
+  // VTK's box matrices take it to the world, which st_datasetToTransport takes to the
+  // transport texture (its "dataset" is the world here). Once per ray.
+  st_toTransport = st_datasetToTransport * in_volumeMatrix[0] * in_textureDatasetMatrix[0];
+//ST::ELSE
   // g_dataPos is the current block's texel coordinate (the one block, or one of a
   // partitioned volume's): undoing VTK's per-block cell-to-point offset and applying its
   // per-block texture -> dataset matrix gives the dataset position, which
   // st_datasetToTransport takes to the transport texture. Once per ray.
-  mat4 st_toTransport =
+  st_toTransport =
     st_datasetToTransport * in_textureDatasetMatrix[0] * inverse(in_cellToPoint[0]);
+//ST::ENDIF
 //ST::ENDIF
 //ST::IF PERSAMPLE
   int st_cachedMaterial = -2;

@@ -72,6 +72,15 @@ std::uint64_t TransportKey(const vtkScattererTransportVolume::Inputs& in)
   f.Add(in.TexToDataset, 16);
   f.Add(in.TexToIndex, 16);
   f.Add(in.ClipPlanes);
+  f.Add(in.BoxTexels, 3);
+  for (const auto& part : in.Parts)
+  {
+    f.Add(part.Volume);
+    f.Add(part.UploadTime);
+    f.Add(part.ScalarScale);
+    f.Add(part.ScalarBias);
+    f.Add(part.BoxToTexture, 16);
+  }
   for (const auto& l : in.Lights)
   {
     f.Add(l.Toward, 3);

@@ -43,7 +43,8 @@ std::string WithCommon(const char* pass, const std::string& variant)
 std::string TransportPrograms::Variant(const vtkScattererTransportVolume::Inputs& in)
 {
   return "#define ST_COMPONENT_MODE " + std::to_string(in.ComponentMode) +
-    "\n#define ST_MATERIAL_COMPONENT " + std::to_string(in.MaterialComponent) + "\n";
+    "\n#define ST_MATERIAL_COMPONENT " + std::to_string(in.MaterialComponent) +
+    "\n#define ST_PARTS " + std::to_string(std::max<size_t>(1, in.Parts.size())) + "\n";
 }
 
 TransportPrograms::TransportPrograms() = default;
@@ -144,6 +145,25 @@ void SetCommonUniforms(vtkShaderProgram* program, const TransportGrid& grid,
   program->SetUniformi("st_cropFlags", in.CropFlags);
   program->SetUniform3f("st_cropMin", in.CropMin);
   program->SetUniform3f("st_cropMax", in.CropMax);
+  // A vtkMultiVolume: each part's placement in the box and its scalar scale and bias.
+  const int parts = static_cast<int>(in.Parts.size());
+  if (parts > 0)
+  {
+    std::vector<float> boxToPart(16 * parts);
+    std::vector<float> scaleBias(2 * parts);
+    for (int k = 0; k < parts; ++k)
+    {
+      for (int i = 0; i < 16; ++i)
+      {
+        // GLSL reads the array as columns: element (row, column) at column * 4 + row.
+        boxToPart[16 * k + 4 * (i % 4) + i / 4] = static_cast<float>(in.Parts[k].BoxToTexture[i]);
+      }
+      scaleBias[2 * k] = in.Parts[k].ScalarScale;
+      scaleBias[2 * k + 1] = in.Parts[k].ScalarBias;
+    }
+    program->SetUniformMatrix4x4v("st_boxToPart", parts, boxToPart.data());
+    program->SetUniform2fv("st_partScaleBias", parts, scaleBias.data());
+  }
   vtkNew<vtkMatrix3x3> gridToWorld, worldToGrid;
   for (int i = 0; i < 9; ++i)
   {
@@ -203,10 +223,26 @@ ScopedVolume::ScopedVolume(vtkShaderProgram* program, const vtkScattererTranspor
     // (GL_INVALID_OPERATION: nothing is drawn). The volume's unit is always 3D.
     program->SetUniformi("st_mask", this->Volume->GetTextureUnit());
   }
+  for (size_t k = 0; k < in.Parts.size(); ++k)
+  {
+    vtkTextureObject* part = in.Parts[k].Volume;
+    // Part 0's texture is the volume's, active already.
+    if (part != this->Volume)
+    {
+      part->Activate();
+      this->Parts.push_back(part);
+    }
+    const std::string name = "st_parts[" + std::to_string(k) + "]";
+    program->SetUniformi(name.c_str(), part->GetTextureUnit());
+  }
 }
 
 ScopedVolume::~ScopedVolume()
 {
+  for (vtkTextureObject* part : this->Parts)
+  {
+    part->Deactivate();
+  }
   if (this->Mask)
   {
     this->Mask->Deactivate();

@@ -6,6 +6,8 @@
 
 #include "vtkScattererTransportVolume.h" // for Inputs
 
+#include <vector> // for ScopedVolume::Parts
+
 #include <memory> // for std::unique_ptr
 #include <string>
 
@@ -76,8 +78,9 @@ private:
   vtkTextureObject* Texture;
 };
 
-/** Binds the scalar texture, and the mask when there is one, to a pass that reads the
- * medium (st_volume, st_mask), for this object's lifetime. */
+/** Binds the scalar texture, the mask when there is one and a vtkMultiVolume's parts to
+ * a pass that reads the medium (st_volume, st_mask, st_parts), for this object's
+ * lifetime. */
 class ScopedVolume
 {
 public:
@@ -89,6 +92,7 @@ public:
 private:
   vtkTextureObject* Volume;
   vtkTextureObject* Mask;
+  std::vector<vtkTextureObject*> Parts;
 };
 }
 

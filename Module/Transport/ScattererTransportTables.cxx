@@ -22,13 +22,14 @@ void TransportTables::Upload(
 
   // Nearest: a scalar belongs to one material or none.
   std::vector<float> table(in.MaterialTable);
-  if (table.empty())
+  const int materialRows = std::max(1, in.MaterialRows);
+  if (table.size() < static_cast<size_t>(materialRows))
   {
-    table.push_back(-1.0f);
+    table.assign(materialRows, -1.0f);
   }
   this->Materials = NewTransportTexture(window, false, vtkTextureObject::ClampToEdge);
-  this->Materials->Create2DFromRaw(
-    static_cast<unsigned int>(table.size()), 1, 1, VTK_FLOAT, table.data());
+  this->Materials->Create2DFromRaw(static_cast<unsigned int>(table.size() / materialRows),
+    static_cast<unsigned int>(materialRows), 1, VTK_FLOAT, table.data());
 
   const int materials = std::max<int>(1, static_cast<int>(in.MaterialColors.size() / 3));
   const int width = std::max(1, in.KernelWidth);

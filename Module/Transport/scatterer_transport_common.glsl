@@ -47,6 +47,7 @@ uniform float st_mediumRows;       // rows of st_medium (1, or 256 with a label-
 #define ST_LUMINANCE_ALPHA 2
 #define ST_RGBA 3
 #define ST_TRANSFER_2D 4
+#define ST_MULTI_INPUT 5
 
 vec3 st_gridToTexture(vec3 j)
 {
@@ -164,6 +165,61 @@ vec4 st_componentsMedium(vec4 s)
 }
 #endif
 
+#if ST_COMPONENT_MODE == ST_MULTI_INPUT
+// A vtkMultiVolume's inputs (ST_PARTS of them, defined with the rule): the grid lies on
+// a box that holds them all, and t is the box's texture coordinate.
+uniform sampler3D st_parts[ST_PARTS];
+uniform mat4 st_boxToPart[ST_PARTS];   // box texture coordinate -> the part's own
+uniform vec2 st_partScaleBias[ST_PARTS]; // texel -> normalised scalar: * x + y
+
+// Part k's medium at box position t: row k of the medium at its normalised scalar s;
+// none outside the part (inside: false).
+vec4 st_partMedium(sampler3D volume, int k, vec3 t, out float s, out bool inside)
+{
+  vec3 p = (st_boxToPart[k] * vec4(t, 1.0)).xyz;
+  s = 0.0;
+  inside = all(greaterThanEqual(p, vec3(0.0))) && all(lessThanEqual(p, vec3(1.0)));
+  if (!inside)
+  {
+    return vec4(0.0);
+  }
+  s = clamp(texture(volume, p).r * st_partScaleBias[k].x + st_partScaleBias[k].y, 0.0, 1.0);
+  return st_mediumRow(s, float(k));
+}
+
+// The parts together. VTK 9.1 composites them one after the other at each ray step, so
+// a step's opacity is 1 - prod_k (1 - alpha_k): the extinctions add,
+//   sigma_t = sum_k sigma_k,  albedo = sum_k sigma_k rgb_k / sigma_t.
+// `dominant` is the part that takes the most light at t (-1: none), `scalar` its scalar:
+// it gives the material there (st_materialCoordAt). Where no part has matter, the albedo
+// is the first covering part's colour there, as one volume's medium keeps its colour
+// transfer function's value where the opacity is 0 (the diffusion's coarse grid averages
+// it in: scatterer_transport_coarsen.glsl), so that a volume alone and the same volume
+// in a vtkMultiVolume are lit alike.
+vec4 st_multiMedium(vec3 t, out int dominant, out float scalar)
+{
+  float sigma = 0.0, most = 0.0;
+  vec3 colour = vec3(0.0), emptyColour = vec3(0.0);
+  bool covered = false;
+  dominant = -1;
+  scalar = 0.0;
+  // Samplers in an array take constant indices only: one block per part.
+  // (one line: GLSL 1.50 has no line continuation)
+#define ST_ADD_PART(k) { float s; bool inside; vec4 m = st_partMedium(st_parts[k], k, t, s, inside); sigma += m.a; colour += m.a * m.rgb; if (m.a > most) { most = m.a; dominant = k; scalar = s; } if (inside && !covered) { covered = true; emptyColour = m.rgb; } }
+  ST_ADD_PART(0)
+#if ST_PARTS > 1
+  ST_ADD_PART(1)
+#endif
+#if ST_PARTS > 2
+  ST_ADD_PART(2)
+#endif
+#if ST_PARTS > 3
+  ST_ADD_PART(3)
+#endif
+  return sigma > 0.0 ? vec4(clamp(colour / sigma, 0.0, 1.0), sigma) : vec4(emptyColour, 0.0);
+}
+#endif
+
 // The medium at a texture position: rgb = albedo (the colour transfer function),
 // a = extinction coefficient sigma_t per world unit in VTK's convention
 // sigma_t = -ln(1 - alpha) / ScalarOpacityUnitDistance, tabulated on the CPU from
@@ -175,7 +231,11 @@ vec4 st_mediumAt(vec3 t)
   {
     return vec4(0.0);
   }
-#if ST_COMPONENT_MODE == ST_TRANSFER_2D
+#if ST_COMPONENT_MODE == ST_MULTI_INPUT
+  int dominant;
+  float s;
+  return st_multiMedium(t, dominant, s);
+#elif ST_COMPONENT_MODE == ST_TRANSFER_2D
   return texture(st_medium, vec2(st_scalarAt(t), st_gradientMagnitudeAt(t)));
 #elif ST_COMPONENT_MODE != ST_ONE_SCALAR
   return st_componentsMedium(st_scalarsAt(t));
@@ -193,6 +253,21 @@ vec4 st_mediumAt(vec3 t)
     }
   }
   return own;
+#endif
+}
+
+// Where the material table is read for the matter at texture position t (inside the
+// grid and kept): (normalised scalar, row); row < 0: no matter, no material.
+vec2 st_materialCoordAt(vec3 t)
+{
+#if ST_COMPONENT_MODE == ST_MULTI_INPUT
+  // The part that takes the most light there gives the material, from its own row.
+  int dominant;
+  float s;
+  st_multiMedium(t, dominant, s);
+  return dominant < 0 ? vec2(0.0, -1.0) : vec2(s, (float(dominant) + 0.5) / float(ST_PARTS));
+#else
+  return vec2(clamp(st_scalarAt(t), 0.0, 1.0), 0.5);
 #endif
 }
 

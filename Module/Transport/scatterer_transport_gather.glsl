@@ -26,7 +26,7 @@ uniform int st_kernelCount;
 uniform float st_layer;
 uniform mat3 st_worldToGrid;
 uniform int st_materialCount;
-uniform sampler2D st_materialTable; // material index over the normalised scalar, -1: none
+uniform sampler2D st_materialTable; // material index over the normalised scalar (a row per part), -1: none
 uniform vec3 st_matColor[ST_MAX_MATERIALS];
 uniform float st_speedRatio[ST_MAX_MATERIALS * ST_MAX_MATERIALS];
 uniform float st_opacityRatio[ST_MAX_MATERIALS * ST_MAX_MATERIALS];
@@ -46,8 +46,8 @@ int st_materialAt(vec3 t)
   {
     return -1;
   }
-  float s = clamp(st_scalarAt(t), 0.0, 1.0);
-  return int(floor(texture(st_materialTable, vec2(s, 0.5)).r + 0.5));
+  vec2 at = st_materialCoordAt(t);
+  return at.y < 0.0 ? -1 : int(floor(texture(st_materialTable, at).r + 0.5));
 }
 
 float st_T(vec3 j)

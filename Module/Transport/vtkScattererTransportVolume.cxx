@@ -148,8 +148,11 @@ bool vtkScattererTransportVolume::Update(
 
   // The stages: place the grid, compile the programs (once), upload the tables,
   // allocate the light texture, run the passes.
-  const int volumeDims[3] = { static_cast<int>(in.Volume->GetWidth()),
-    static_cast<int>(in.Volume->GetHeight()), static_cast<int>(in.Volume->GetDepth()) };
+  // The grid lies on the volume texture, or on the box that holds a vtkMultiVolume's parts.
+  const bool box = !in.Parts.empty();
+  const int volumeDims[3] = { box ? in.BoxTexels[0] : static_cast<int>(in.Volume->GetWidth()),
+    box ? in.BoxTexels[1] : static_cast<int>(in.Volume->GetHeight()),
+    box ? in.BoxTexels[2] : static_cast<int>(in.Volume->GetDepth()) };
   if (!s.Grid.Place(volumeDims, in.IndexOrigin, in.Downsample, in.TexToWorld))
   {
     why = "the volume's placement is degenerate (zero spacing or a singular matrix)";

@@ -97,14 +97,17 @@ public:
     /// - LuminanceAlpha: albedo from row 0 at component 0, sigma_t from row 1 at component 1;
     /// - RGBA: albedo = the rgb components, sigma_t from row 0 at component 3;
     /// - Transfer2D: Medium is a 2D table over (scalar, gradient magnitude), the
-    ///   magnitude as VTK's ray caster computes it (VoxelStep, GradientAspect).
+    ///   magnitude as VTK's ray caster computes it (VoxelStep, GradientAspect);
+    /// - MultiInput: the inputs of a vtkMultiVolume (Parts), row k of Medium at part k's
+    ///   scalar, their extinctions summed.
     enum ComponentRule
     {
       OneScalar = 0,
       Independent = 1,
       LuminanceAlpha = 2,
       RGBA = 3,
-      Transfer2D = 4
+      Transfer2D = 4,
+      MultiInput = 5
     };
     int ComponentMode = OneScalar;
     int Components = 1;                         ///< components of the volume texture (1-4)
@@ -113,6 +116,21 @@ public:
     float VoxelStep[3] = { 0, 0, 0 };           ///< one texel of the volume texture (Transfer2D)
     float GradientAspect[3] = { 1, 1, 1 }; ///< spacing * 2 / mean spacing, per axis (Transfer2D)
     unsigned long VolumeUploadTime = 0;    ///< changes when the texture's content does
+    /// One input of a vtkMultiVolume, read through its own placement.
+    struct Part
+    {
+      vtkTextureObject* Volume = nullptr; ///< the ray caster's texture of this input (1 component)
+      float ScalarScale = 1, ScalarBias = 0; ///< texel -> normalised scalar
+      double BoxToTexture[16] = {};          ///< box texture coordinates -> Volume's (row-major)
+      unsigned long UploadTime = 0;
+    };
+    /// A vtkMultiVolume (MultiInput; at most kMaxParts): VTK 9.1 composites its inputs one
+    /// after the other at each ray step, so their extinctions add up. The transport is
+    /// then placed on a box that holds all of them: "volume texture coordinates" below
+    /// are the box's, BoxTexels its texels (Volume is part 0's texture, read by nothing).
+    std::vector<Part> Parts;
+    int BoxTexels[3] = { 0, 0, 0 };
+    static constexpr int kMaxParts = 4;
     /// A binary mask on the volume's grid (R, nearest; VTK's convention: a voxel whose
     /// mask value is 0 is masked out), or none. Masked-out matter neither shows (the ray
     /// caster's own mask) nor casts shadow or scatters light (here).
@@ -149,6 +167,7 @@ public:
     // (-1: none), colours, albedos, ratio tables (materials^2, row = the sample's
     // material) and each one's kernel.
     std::vector<float> MaterialTable;
+    int MaterialRows = 1;              ///< rows of MaterialTable (MultiInput: one per part)
     std::vector<float> MaterialColors; ///< 3 per material
     std::vector<float> SpeedRatios;
     std::vector<float> OpacityRatios;

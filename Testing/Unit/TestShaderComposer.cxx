@@ -148,3 +148,28 @@ TEST(ShaderComposer, TextDependsOnLightSlotsOnly)
     EXPECT_EQ(scatterer_shader::LightSlots(f), expected[lights - 1]) << lights;
   }
 }
+
+TEST(ShaderComposer, MultiVolumeCompositesEachInputWithItsOwnSamplerAndMatrices)
+{
+  // VTK 9.1 numbers a vtkMultiVolume's samplers and transfer functions from 0 and its
+  // matrices from 1 (0 is the box): each input's block must read its own.
+  Features f;
+  f.Parts = 3;
+  const std::string impl = scatterer_shader::ShadingImplementation(f);
+  for (int part = 0; part < 3; ++part)
+  {
+    const std::string k = std::to_string(part), m = std::to_string(part + 1);
+    EXPECT_TRUE(Has(impl, "texture3D(in_volume[" + k + "], texPos)")) << part;
+    EXPECT_TRUE(Has(impl, "in_opacityTransferFunc_" + k + "[0]")) << part;
+    EXPECT_TRUE(Has(impl, "in_colorTransferFunc_" + k + "[0]")) << part;
+    EXPECT_TRUE(Has(impl, "in_inverseTextureDatasetMatrix[" + m + "]")) << part;
+  }
+  EXPECT_FALSE(Has(impl, "in_volume[3]"));
+  EXPECT_FALSE(Has(impl, "@"));
+  EXPECT_FALSE(Has(impl, "//ST::"));
+  // The light is looked up from the world position, through the box's matrices.
+  EXPECT_TRUE(Has(scatterer_shader::ShadingInitialization(f), "in_volumeMatrix[0]"));
+  f.Parts = 0;
+  EXPECT_FALSE(Has(scatterer_shader::ShadingInitialization(f), "in_volumeMatrix[0]"));
+  EXPECT_FALSE(Has(scatterer_shader::ShadingImplementation(f), "in_colorTransferFunc_"));
+}
