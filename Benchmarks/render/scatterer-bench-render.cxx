@@ -2,7 +2,7 @@
 // stock composite, stock Phong, the light transport volume and the per-sample photon
 // test, with the camera still and orbiting under the renderer's headlight (the light
 // moves every frame, so the transport volume is rebuilt every frame), and of a
-// vtkMultiVolume (the CT head and a ball inside it), all in one process after a
+// vtkMultiVolume (the CT head and a ball above it), all in one process after a
 // warm-up frame each. Optionally on the CT head resampled to other
 // dimensions (the same physical extent). Writes a CSV row per configuration and a PNG
 // per configuration; the last column is the process's peak resident memory so far
@@ -58,7 +58,7 @@ struct Config
   std::string Illumination = "transport";
   bool Orbit = false;       // headlight + camera turning 2 degrees a frame: the light moves
   bool Interactive = false; // frames as VTK's interactor asks while dragging (rate 20/s)
-  bool Multi = false;       // a vtkMultiVolume: the CT head and a ball inside it (MultiScene)
+  bool Multi = false;       // a vtkMultiVolume: the CT head and a ball above it (MultiScene)
 };
 
 std::vector<Config> Configs()
@@ -78,8 +78,8 @@ std::vector<Config> Configs()
 }
 
 // A vtkMultiVolume: the CT head (input 0) and a red ball of 48^3 voxels of 1 mm (input 1,
-// placed by its own volume inside the head, as a segmented lesion or a second scan is):
-// the transport volume spans both, on the CT head's voxel lattice.
+// placed by its own volume above the head, which it shadows): the transport volume spans
+// both, on the CT head's voxel lattice.
 vtkSmartPointer<vtkMultiVolume> MultiScene(
   vtkGPUVolumeRayCastMapper* mapper, vtkImageData* head, vtkVolumeProperty* headProperty)
 {
@@ -109,7 +109,7 @@ vtkSmartPointer<vtkMultiVolume> MultiScene(
   vtkNew<vtkVolume> headVolume, ballVolume;
   headVolume->SetProperty(headProperty);
   ballVolume->SetProperty(ballProperty);
-  ballVolume->SetPosition(122.0 - n / 2, 135.0 - n / 2, 75.0 - n / 2);
+  ballVolume->SetPosition(122.0 - n / 2, 150.0 - n / 2, 185.0 - n / 2);
   mapper->SetInputDataObject(0, head);
   mapper->SetInputDataObject(1, ball);
   auto multi = vtkSmartPointer<vtkMultiVolume>::New();
