@@ -123,7 +123,7 @@ std::string TransportUpdate::Update(vtkRenderer* ren, vtkVolume* vol, const Fram
   auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
   vtkScattererTransportVolume::Inputs& t = this->Inputs;
   const std::string stock = plan.Parts.empty() ? this->UpdateVolume(ren, vol, plan, source, warn)
-                                               : this->UpdateParts(plan, source);
+                                               : this->UpdateParts(plan, source, warn);
   if (!stock.empty())
   {
     return stock;
@@ -245,7 +245,8 @@ std::string TransportUpdate::UpdateVolume(vtkRenderer* ren, vtkVolume* vol, cons
 // lattice (within a budget of the inputs' texels together); each input is read through
 // its own texture -> world placement (texture = VTK's texel-centred coordinates, as for
 // one volume).
-std::string TransportUpdate::UpdateParts(const FramePlan& plan, const TransportSource& source)
+std::string TransportUpdate::UpdateParts(
+  const FramePlan& plan, const TransportSource& source, WarnOnce& warn)
 {
   vtkScattererTransportVolume::Inputs& t = this->Inputs;
   if (source.PartTextures.size() != plan.Parts.size())
@@ -268,9 +269,16 @@ std::string TransportUpdate::UpdateParts(const FramePlan& plan, const TransportS
     vtkVolumeTexture* texture = source.PartTextures[k];
     const auto& parts = texture->GetPartitions();
     vtkVolumeTexture::VolumeBlock* block = texture->GetCurrentBlock();
-    if (parts[0] * parts[1] * parts[2] != 1 || !block || !block->TextureObject)
+    if (!block || !block->TextureObject)
     {
-      return "a vtkMultiVolume input that is partitioned or not loaded";
+      return "a vtkMultiVolume input that is not loaded";
+    }
+    if (parts[0] * parts[1] * parts[2] != 1)
+    {
+      warn("Scatterer-template illumination does not apply to a partitioned "
+           "vtkMultiVolume input; this volume renders as vtkOpenGLGPUVolumeRayCastMapper "
+           "would.");
+      return "a partitioned vtkMultiVolume input";
     }
     const FramePlan::Part& part = plan.Parts[k];
     auto& out = t.Parts[k];
@@ -285,9 +293,16 @@ std::string TransportUpdate::UpdateParts(const FramePlan& plan, const TransportS
     texelCount += static_cast<double>(out.Volume->GetWidth()) * out.Volume->GetHeight() *
       out.Volume->GetDepth();
   }
-  if (std::abs(texToWorld.front()->Determinant()) <= 0.0)
+  for (const auto& toWorld : texToWorld)
   {
-    return "a vtkMultiVolume input with zero spacing";
+    const double determinant = toWorld->Determinant();
+    if (!(std::abs(determinant) > 0.0) || !std::isfinite(determinant))
+    {
+      warn("Scatterer-template illumination does not apply to a vtkMultiVolume input of "
+           "zero spacing or scale; this volume renders as vtkOpenGLGPUVolumeRayCastMapper "
+           "would.");
+      return "a vtkMultiVolume input with zero spacing or scale";
+    }
   }
   // The box is laid along the first input's texture axes (a CT and its segmentations
   // share them, and the light then follows their voxels with no staircase), stretched

@@ -116,7 +116,7 @@ private:
     const TransportSource& source, WarnOnce& warn);
   /** A vtkMultiVolume: each input's texture and placement in the box around them; "" or
    * why not. */
-  std::string UpdateParts(const FramePlan& plan, const TransportSource& source);
+  std::string UpdateParts(const FramePlan& plan, const TransportSource& source, WarnOnce& warn);
   /** Where the volume texture lies (texture -> dataset -> world). */
   void UpdateGeometry(vtkVolume* volume, const FramePlan& plan);
   /** The clipping planes and the cropping region. */

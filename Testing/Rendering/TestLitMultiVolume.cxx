@@ -364,3 +364,23 @@ TEST(LitMultiVolume, AnInputOnTheFirstLatticeIsLitAsAlone)
   EXPECT_LE(lit.Mean, ray.Mean + 0.05);
   EXPECT_LE(lit.FractionOver, ray.FractionOver + 0.001);
 }
+
+TEST(LitMultiVolume, AnInputOfZeroScaleRendersAsStockWithOneWarning)
+{
+  // A flattened input has no texture -> world inverse to read it through.
+  vtkNew<vtkScattererTemplateVolumeMapper> ours;
+  vtkNew<vtkOpenGLGPUVolumeRayCastMapper> stock;
+  MultiScene scene(ours), stockScene(stock);
+  scene.BallVolume->SetScale(1.0, 1.0, 0.0);
+  stockScene.BallVolume->SetScale(1.0, 1.0, 0.0);
+  vtkNew<vtkTest::ErrorObserver> warnings;
+  ours->AddObserver(vtkCommand::WarningEvent, warnings);
+  const auto expected = scatterer_testing::RenderSceneOnce(stockScene.Renderer, stock);
+  const auto first = scatterer_testing::RenderSceneOnce(scene.Renderer, ours);
+  ASSERT_GT(scatterer_testing::MeanBrightness(expected), 1.0) << "the scene is visible";
+  EXPECT_EQ(scatterer_testing::WarningCount(warnings), 1u);
+  EXPECT_NE(
+    scatterer_testing::LastWarning(warnings).find("zero spacing or scale"), std::string::npos)
+    << scatterer_testing::LastWarning(warnings);
+  EXPECT_EQ(scatterer_testing::MaxDifference(first, expected), 0);
+}
