@@ -19,6 +19,9 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <cstdlib>
+#include <utility>
+#include <vector>
 
 namespace
 {
@@ -136,4 +139,107 @@ TEST(LabelMapMask, TwoHundredLabelsAreLitWithoutHolesAndKeepTheirColours)
   ASSERT_GT(redStock, 200) << "label 200's region shows red in the stock picture";
   EXPECT_GT(redLit, redStock / 2) << "label 200 lost its own colour";
   EXPECT_GT(scatterer_testing::MaxDifference(stock, lit), 20) << "no illumination was applied";
+}
+
+namespace
+{
+// A white floor (label 1) and a red wall standing on it (label 2), one scalar, the
+// volume's own colour grey: lit from the camera's side, with or without the
+// multiple-scattering term. Returns the stock and the lit pictures.
+std::pair<std::vector<unsigned char>, std::vector<unsigned char>> RenderWall(
+  double multipleScattering)
+{
+  const auto make = [](bool mask)
+  {
+    auto image = vtkSmartPointer<vtkImageData>::New();
+    image->SetDimensions(N, N, N);
+    image->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+    auto* p = static_cast<unsigned char*>(image->GetScalarPointer());
+    for (int k = 0; k < N; ++k)
+      for (int j = 0; j < N; ++j)
+        for (int i = 0; i < N; ++i)
+        {
+          const bool floor = k >= 4 && k <= 9;
+          const bool wall = i >= 20 && i <= 27 && j >= 8 && j <= 40 && k >= 10 && k <= 40;
+          *p++ = mask ? (wall ? 2 : floor ? 1 : 0) : (wall || floor ? 200 : 0);
+        }
+    return image;
+  };
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(0, 0.0);
+  opacity->AddPoint(100, 0.0);
+  opacity->AddPoint(200, 0.8);
+  opacity->AddPoint(255, 0.8);
+  const auto flat = [](double r, double g, double b)
+  {
+    auto c = vtkSmartPointer<vtkColorTransferFunction>::New();
+    c->AddRGBPoint(0, r, g, b);
+    c->AddRGBPoint(255, r, g, b);
+    return c;
+  };
+  vtkNew<vtkVolumeProperty> property;
+  property->SetScalarOpacity(opacity);
+  property->SetColor(flat(0.5, 0.5, 0.5));
+  property->SetScalarOpacityUnitDistance(1.0);
+  property->SetInterpolationTypeToLinear();
+  property->SetLabelColor(1, flat(0.9, 0.9, 0.9));
+  property->SetLabelScalarOpacity(1, opacity);
+  property->SetLabelColor(2, flat(1.0, 0.1, 0.1));
+  property->SetLabelScalarOpacity(2, opacity);
+  std::pair<std::vector<unsigned char>, std::vector<unsigned char>> out;
+  for (bool ours : { false, true })
+  {
+    vtkNew<vtkScattererTemplateVolumeMapper> scatterer;
+    vtkNew<vtkOpenGLGPUVolumeRayCastMapper> stock;
+    vtkGPUVolumeRayCastMapper* mapper = ours ? static_cast<vtkGPUVolumeRayCastMapper*>(scatterer)
+                                             : static_cast<vtkGPUVolumeRayCastMapper*>(stock);
+    scatterer->SetMultipleScattering(multipleScattering);
+    mapper->SetInputData(make(false));
+    mapper->SetMaskInput(make(true));
+    mapper->SetMaskTypeToLabelMap();
+    mapper->AutoAdjustSampleDistancesOff();
+    mapper->SetSampleDistance(0.5);
+    mapper->UseJitteringOff();
+    vtkNew<vtkRenderer> renderer;
+    scatterer_examples::AddVolume(renderer, mapper, property);
+    renderer->AutomaticLightCreationOff();
+    scatterer_testing::AddSceneLight(renderer, -100.0, 23.5, 60.0, 23.5, 23.5, 0.0);
+    vtkCamera* camera = renderer->GetActiveCamera();
+    camera->SetFocalPoint(23.5, 23.5, 10);
+    camera->SetPosition(-60, 23.5, 90);
+    camera->SetViewUp(0, 0, 1);
+    renderer->ResetCameraClippingRange();
+    (ours ? out.second : out.first) = scatterer_testing::RenderSceneOnce(renderer, mapper);
+  }
+  return out;
+}
+
+// Pixels the stock picture shows white (the floor, label 1) that the lit one shows red.
+int RedOnWhite(const std::pair<std::vector<unsigned char>, std::vector<unsigned char>>& p)
+{
+  int count = 0;
+  for (size_t q = 0; q + 3 < p.first.size(); q += 4)
+  {
+    const auto& s = p.first;
+    const auto& l = p.second;
+    const bool white =
+      s[q] > 60 && std::abs(s[q] - s[q + 1]) < 10 && std::abs(s[q] - s[q + 2]) < 10;
+    count += white && l[q] > 40 && l[q] > 3 * l[q + 1] / 2 ? 1 : 0;
+  }
+  return count;
+}
+}
+
+TEST(LabelMapMask, ALabelsColourBleedsOntoItsNeighbourThroughScatteredLight)
+{
+  // Every label is a material of its own colour in the light too: light scattered off
+  // the red wall (label 2) tints the white floor (label 1) beside it. The volume's own
+  // colour is grey, so red on the floor can only come from the wall's label; without
+  // the multiple-scattering term, the floor keeps its own colour.
+  const int scattered = RedOnWhite(RenderWall(1.0));
+  const int direct = RedOnWhite(RenderWall(0.0));
+  std::printf(
+    "white floor pixels shown red: %d with scattered light, %d without\n", scattered, direct);
+  EXPECT_GT(scattered, 200) << "the red label's colour does not reach its neighbour";
+  EXPECT_LT(direct, 10) << "the floor is red without any light scattered off the wall";
 }
