@@ -78,6 +78,20 @@ std::string Unsupported(
   return "";
 }
 
+// What becomes of the materials beyond the limit: the transport volume still lights
+// their matter (shadows, multiple scattering), without template in-scattering; the
+// per-sample photon test leaves it unlit.
+std::string DroppedMaterials(
+  int dropped, const char* where, const IlluminationParameters& parameters)
+{
+  return "Scatterer-template illumination handles " +
+    std::to_string(scatterer_scene::kMaxMaterials) + " materials" + where + "; " +
+    std::to_string(dropped) +
+    (parameters.Transport()
+        ? " more are lit by the transport volume without scatterer templates of their own."
+        : " more stay unlit.");
+}
+
 // A vtkMultiVolume: each input as the ray caster composites it (one scalar through its
 // volume's 1D transfer functions), or why it cannot be lit.
 std::string PlanParts(const VolumeSource& source, FramePlan& plan)
@@ -336,8 +350,7 @@ std::string FramePlanner::PlanMaterials(vtkVolume* vol, const VolumeSource& sour
   }
   if (plan.Materials.Dropped > 0)
   {
-    warn("Scatterer-template illumination handles 8 materials; " +
-      std::to_string(plan.Materials.Dropped) + " more stay unlit.");
+    warn(DroppedMaterials(plan.Materials.Dropped, "", parameters));
   }
   if (!requested.empty())
   {
@@ -380,8 +393,7 @@ std::string FramePlanner::PlanPartMaterials(const IlluminationParameters& parame
   }
   if (dropped > 0)
   {
-    warn("Scatterer-template illumination handles 8 materials over all inputs; " +
-      std::to_string(dropped) + " more stay unlit.");
+    warn(DroppedMaterials(dropped, " over all inputs", parameters));
   }
   return "";
 }
