@@ -12,6 +12,7 @@
 #include "vtk_glew.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 
 namespace scatterer_testing
@@ -128,6 +129,21 @@ ImageDifference CompareRgb(const std::vector<unsigned char>& a, const std::vecto
     d.FractionOver = static_cast<double>(over) / d.Pixels;
   }
   return d;
+}
+
+Equivalence CompareWays(const char* what, const std::vector<unsigned char>& litA,
+  const std::vector<unsigned char>& litB, const std::vector<unsigned char>& stockA,
+  const std::vector<unsigned char>& stockB)
+{
+  Equivalence e;
+  e.Lit = CompareRgb(litA, litB, 16);
+  e.Stock = CompareRgb(stockA, stockB, 16);
+  e.Illumination = CompareRgb(litA, stockA, 16);
+  std::printf("%s: lit mean %.3f, %.2f%% over 16 levels; stock mean %.3f, %.2f%%; lit vs stock "
+              "mean %.2f\n",
+    what, e.Lit.Mean, 100.0 * e.Lit.FractionOver, e.Stock.Mean, 100.0 * e.Stock.FractionOver,
+    e.Illumination.Mean);
+  return e;
 }
 
 double MeanBrightness(const std::vector<unsigned char>& image)

@@ -63,6 +63,20 @@ struct ImageDifference
 ImageDifference CompareRgb(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b,
   int levels, const std::vector<bool>* include = nullptr);
 
+/**
+ * One scene rendered two ways (say whole and partitioned), each lit and stock: how the
+ * two lit pictures differ, how the two stock ones do (what the ray caster itself
+ * changes), and how lit differs from stock (whether the illumination shows at all);
+ * channel differences over 16 levels count as over. Prints the three under @p what.
+ */
+struct Equivalence
+{
+  ImageDifference Lit, Stock, Illumination;
+};
+Equivalence CompareWays(const char* what, const std::vector<unsigned char>& litA,
+  const std::vector<unsigned char>& litB, const std::vector<unsigned char>& stockA,
+  const std::vector<unsigned char>& stockB);
+
 /** Mean of the RGB channels. */
 double MeanBrightness(const std::vector<unsigned char>& image);
 

@@ -7,6 +7,7 @@
 #include "Common/ScattererMapperSetup.h"
 #include "ScattererErrorObserver.h"
 #include "ScattererRenderHarness.h"
+#include "ScattererTestVolumes.h"
 
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
@@ -38,21 +39,26 @@ constexpr int Labels = 200;
 // (1..199), and the front quarter (i < 12) label 200.
 vtkSmartPointer<vtkImageData> Grid(bool mask)
 {
-  auto image = vtkSmartPointer<vtkImageData>::New();
-  image->SetDimensions(N, N, N);
-  image->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
-  auto* p = static_cast<unsigned char*>(image->GetScalarPointer());
-  for (int k = 0; k < N; ++k)
-    for (int j = 0; j < N; ++j)
-      for (int i = 0; i < N; ++i)
-      {
-        const bool inside = i > 4 && i < N - 5 && j > 4 && j < N - 5 && k > 4 && k < N - 5;
-        if (!mask)
-          *p++ = inside ? 200 : 0;
-        else
-          *p++ = i < 12 ? Labels : static_cast<unsigned char>(1 + (i * 7 + j * 13) % (Labels - 1));
-      }
-  return image;
+  return scatterer_testing::MakeComponentVolume(N, 1,
+    [mask](int i, int j, int k, int) -> unsigned char
+    {
+      const bool inside = i > 4 && i < N - 5 && j > 4 && j < N - 5 && k > 4 && k < N - 5;
+      if (!mask)
+        return inside ? 200 : 0;
+      return i < 12 ? Labels : static_cast<unsigned char>(1 + (i * 7 + j * 13) % (Labels - 1));
+    });
+}
+
+// The label-map mask scenes' mapper settings: data, mask, and a fixed, unjittered step.
+void SetUpLabelMapper(
+  vtkGPUVolumeRayCastMapper* mapper, vtkImageData* data, vtkImageData* labelMask)
+{
+  mapper->SetInputData(data);
+  mapper->SetMaskInput(labelMask);
+  mapper->SetMaskTypeToLabelMap();
+  mapper->AutoAdjustSampleDistancesOff();
+  mapper->SetSampleDistance(0.5);
+  mapper->UseJitteringOff();
 }
 
 std::vector<unsigned char> Render(bool ours)
@@ -88,14 +94,7 @@ std::vector<unsigned char> Render(bool ours)
   vtkNew<vtkOpenGLGPUVolumeRayCastMapper> stock;
   vtkGPUVolumeRayCastMapper* mapper = ours ? static_cast<vtkGPUVolumeRayCastMapper*>(scatterer)
                                            : static_cast<vtkGPUVolumeRayCastMapper*>(stock);
-  const auto data = Grid(false);
-  const auto mask = Grid(true);
-  mapper->SetInputData(data);
-  mapper->SetMaskInput(mask);
-  mapper->SetMaskTypeToLabelMap();
-  mapper->AutoAdjustSampleDistancesOff();
-  mapper->SetSampleDistance(0.5);
-  mapper->UseJitteringOff();
+  SetUpLabelMapper(mapper, Grid(false), Grid(true));
   vtkNew<vtkRenderer> renderer;
   scatterer_examples::AddVolume(renderer, mapper, property);
   renderer->AutomaticLightCreationOff();
@@ -157,19 +156,13 @@ std::pair<std::vector<unsigned char>, std::vector<unsigned char>> RenderWall(
 {
   const auto make = [](bool mask)
   {
-    auto image = vtkSmartPointer<vtkImageData>::New();
-    image->SetDimensions(N, N, N);
-    image->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
-    auto* p = static_cast<unsigned char*>(image->GetScalarPointer());
-    for (int k = 0; k < N; ++k)
-      for (int j = 0; j < N; ++j)
-        for (int i = 0; i < N; ++i)
-        {
-          const bool floor = k >= 4 && k <= 9;
-          const bool wall = i >= 20 && i <= 27 && j >= 8 && j <= 40 && k >= 10 && k <= 40;
-          *p++ = mask ? (wall ? 2 : floor ? 1 : 0) : (wall || floor ? 200 : 0);
-        }
-    return image;
+    return scatterer_testing::MakeComponentVolume(N, 1,
+      [mask](int i, int j, int k, int) -> unsigned char
+      {
+        const bool floor = k >= 4 && k <= 9;
+        const bool wall = i >= 20 && i <= 27 && j >= 8 && j <= 40 && k >= 10 && k <= 40;
+        return mask ? (wall ? 2 : floor ? 1 : 0) : (wall || floor ? 200 : 0);
+      });
   };
   vtkNew<vtkPiecewiseFunction> opacity;
   opacity->AddPoint(0, 0.0);
@@ -200,12 +193,7 @@ std::pair<std::vector<unsigned char>, std::vector<unsigned char>> RenderWall(
     vtkGPUVolumeRayCastMapper* mapper = ours ? static_cast<vtkGPUVolumeRayCastMapper*>(scatterer)
                                              : static_cast<vtkGPUVolumeRayCastMapper*>(stock);
     scatterer->SetMultipleScattering(multipleScattering);
-    mapper->SetInputData(make(false));
-    mapper->SetMaskInput(make(true));
-    mapper->SetMaskTypeToLabelMap();
-    mapper->AutoAdjustSampleDistancesOff();
-    mapper->SetSampleDistance(0.5);
-    mapper->UseJitteringOff();
+    SetUpLabelMapper(mapper, make(false), make(true));
     vtkNew<vtkRenderer> renderer;
     scatterer_examples::AddVolume(renderer, mapper, property);
     renderer->AutomaticLightCreationOff();
@@ -286,18 +274,12 @@ int LabelOf(const unsigned char* px)
 std::vector<unsigned char> RenderScalarLabels(bool ours, vtkTest::ErrorObserver* warnings)
 {
   const int n = 64;
-  auto image = vtkSmartPointer<vtkImageData>::New();
-  image->SetDimensions(n, n, n);
-  image->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
-  auto* p = static_cast<unsigned char*>(image->GetScalarPointer());
-  for (int k = 0; k < n; ++k)
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i)
-      {
-        const bool inside = i > 4 && i < n - 5 && j > 4 && j < n - 5 && k > 4 && k < n - 5;
-        *p++ =
-          inside ? static_cast<unsigned char>(1 + (i / 6 + 3 * (j / 6) + 5 * (k / 6)) % 20) : 0;
-      }
+  const auto image = scatterer_testing::MakeComponentVolume(n, 1,
+    [](int i, int j, int k, int) -> unsigned char
+    {
+      const bool inside = i > 4 && i < n - 5 && j > 4 && j < n - 5 && k > 4 && k < n - 5;
+      return inside ? static_cast<unsigned char>(1 + (i / 6 + 3 * (j / 6) + 5 * (k / 6)) % 20) : 0;
+    });
   vtkNew<vtkPiecewiseFunction> opacity;
   vtkNew<vtkColorTransferFunction> colour;
   opacity->AddPoint(0, 0.0);
