@@ -1,5 +1,6 @@
 #include "ScattererRenderHarness.h"
 
+#include "vtkCamera.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkPNGWriter.h"
@@ -129,6 +130,18 @@ ImageDifference CompareRgb(const std::vector<unsigned char>& a, const std::vecto
     d.FractionOver = static_cast<double>(over) / d.Pixels;
   }
   return d;
+}
+
+void LightAndViewBallAbovePlate(vtkRenderer* renderer, int n)
+{
+  renderer->AutomaticLightCreationOff();
+  AddSceneLight(renderer, 0.35, 0.0, 1.0);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  const double c = 0.5 * (n - 1);
+  camera->SetFocalPoint(c, c, 14);
+  camera->SetPosition(c - 40, c - 110, 90);
+  camera->SetViewUp(0, 0, 1);
+  renderer->ResetCameraClippingRange();
 }
 
 Equivalence CompareWays(const char* what, const std::vector<unsigned char>& litA,

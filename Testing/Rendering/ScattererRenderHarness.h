@@ -38,6 +38,13 @@ std::vector<unsigned char> RenderSceneOnce(vtkRenderer* renderer, vtkAbstractMap
 vtkLight* AddSceneLight(vtkRenderer* renderer, double px, double py, double pz, double fx = 0.0,
   double fy = 0.0, double fz = 0.0);
 
+/**
+ * The ball-above-a-plate scenes' light and camera (an @p n ^3 grid of unit spacing, the
+ * plate near its floor): lit from above and a little to the side, so that the ball's
+ * shadow falls on the plate beside the ball, where the camera sees it.
+ */
+void LightAndViewBallAbovePlate(vtkRenderer* renderer, int n);
+
 /** OpenGL errors raised since the last call (0 = none); clears them. */
 unsigned int TakeGLError();
 

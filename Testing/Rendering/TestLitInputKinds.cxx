@@ -5,6 +5,7 @@
 // black hole appears where the stock mapper shows something, and a second frame is the same
 // picture. SCATTERER_TEST_IMAGES=<dir> writes the pictures there to look at.
 #include "Common/ScattererMapperSetup.h"
+#include "ScattererLitPictures.h"
 #include "ScattererRenderHarness.h"
 #include "ScattererTestVolumes.h"
 
@@ -125,25 +126,13 @@ void SetUpMapper(vtkGPUVolumeRayCastMapper* mapper, vtkImageData* image)
   mapper->UseJitteringOff();
 }
 
-// The scene's light and camera: from above and a little to the side, so that the ball's
-// shadow falls on the plate beside the ball, where the camera sees it.
+// The scene's light and camera: the ball's shadow on the plate, in view.
 void SetUpScene(vtkRenderer* renderer)
 {
-  renderer->AutomaticLightCreationOff();
-  scatterer_testing::AddSceneLight(renderer, 0.35, 0.0, 1.0);
-  vtkCamera* camera = renderer->GetActiveCamera();
-  const double c = 0.5 * (N - 1);
-  camera->SetFocalPoint(c, c, 14);
-  camera->SetPosition(c - 40, c - 110, 90);
-  camera->SetViewUp(0, 0, 1);
-  renderer->ResetCameraClippingRange();
+  scatterer_testing::LightAndViewBallAbovePlate(renderer, N);
 }
 
-struct Pictures
-{
-  std::vector<unsigned char> Stock, Off, Lit, LitAgain;
-  std::string Features;
-};
+using Pictures = scatterer_testing::LitPictures;
 
 Pictures Render(Kind kind)
 {
@@ -186,12 +175,7 @@ Pictures Render(Kind kind)
   Pictures out;
   out.Stock = scatterer_testing::RenderAndGrab(window);
   volume->SetMapper(ours);
-  ours->IlluminationEnabledOff();
-  out.Off = scatterer_testing::RenderAndGrab(window);
-  ours->IlluminationEnabledOn();
-  out.Lit = scatterer_testing::RenderAndGrab(window);
-  out.LitAgain = scatterer_testing::RenderAndGrab(window);
-  out.Features = ours->GetLastShaderFeatures();
+  scatterer_testing::RenderOffAndLit(window, ours, out);
   window->RemoveRenderer(renderer);
   ours->ReleaseGraphicsResources(window);
   stock->ReleaseGraphicsResources(window);

@@ -7,6 +7,7 @@
 // plate, and a ball of zero opacity casts none. SCATTERER_TEST_IMAGES=<dir> writes the
 // pictures there to look at.
 #include "ScattererErrorObserver.h"
+#include "ScattererLitPictures.h"
 #include "ScattererRenderHarness.h"
 #include "ScattererTestVolumes.h"
 
@@ -98,24 +99,11 @@ struct MultiScene
     this->Multi->SetVolume(this->PlateVolume, 0);
     this->Multi->SetVolume(this->BallVolume, 1);
     this->Renderer->AddVolume(this->Multi);
-    // From above and a little to the side, so that the ball's shadow falls on the plate
-    // beside the ball, where the camera sees it.
-    this->Renderer->AutomaticLightCreationOff();
-    scatterer_testing::AddSceneLight(this->Renderer, 0.35, 0.0, 1.0);
-    vtkCamera* camera = this->Renderer->GetActiveCamera();
-    const double c = 0.5 * (N - 1);
-    camera->SetFocalPoint(c, c, 14);
-    camera->SetPosition(c - 40, c - 110, 90);
-    camera->SetViewUp(0, 0, 1);
-    this->Renderer->ResetCameraClippingRange();
+    scatterer_testing::LightAndViewBallAbovePlate(this->Renderer, N);
   }
 };
 
-struct Pictures
-{
-  std::vector<unsigned char> Stock, Off, Lit, LitAgain;
-  std::string Features;
-};
+using Pictures = scatterer_testing::LitPictures;
 
 Pictures Render(double ballOpacity, bool emptyBall = false)
 {
@@ -129,12 +117,7 @@ Pictures Render(double ballOpacity, bool emptyBall = false)
   out.Stock = scatterer_testing::RenderAndGrab(window);
   window->RemoveRenderer(stockScene.Renderer);
   window->AddRenderer(scene.Renderer);
-  ours->IlluminationEnabledOff();
-  out.Off = scatterer_testing::RenderAndGrab(window);
-  ours->IlluminationEnabledOn();
-  out.Lit = scatterer_testing::RenderAndGrab(window);
-  out.LitAgain = scatterer_testing::RenderAndGrab(window);
-  out.Features = ours->GetLastShaderFeatures();
+  scatterer_testing::RenderOffAndLit(window, ours, out);
   window->RemoveRenderer(scene.Renderer);
   ours->ReleaseGraphicsResources(window);
   stock->ReleaseGraphicsResources(window);
@@ -324,14 +307,7 @@ std::vector<unsigned char> RenderScene(bool ours, bool multi)
     volume->SetMapper(mapper);
     renderer->AddVolume(volume);
   }
-  renderer->AutomaticLightCreationOff();
-  scatterer_testing::AddSceneLight(renderer, 0.35, 0.0, 1.0);
-  vtkCamera* camera = renderer->GetActiveCamera();
-  const double c = 0.5 * (N - 1);
-  camera->SetFocalPoint(c, c, 14);
-  camera->SetPosition(c - 40, c - 110, 90);
-  camera->SetViewUp(0, 0, 1);
-  renderer->ResetCameraClippingRange();
+  scatterer_testing::LightAndViewBallAbovePlate(renderer, N);
   return scatterer_testing::RenderSceneOnce(renderer, mapper);
 }
 }
