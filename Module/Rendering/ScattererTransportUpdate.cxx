@@ -128,7 +128,7 @@ std::string TransportUpdate::Update(vtkRenderer* ren, vtkVolume* vol, const Fram
   {
     return stock;
   }
-  this->UpdateClipping(plan, source, parameters);
+  this->UpdateClipping(source, parameters, !plan.Parts.empty());
 
   // The tables change with the transfer functions, the ranges, the materials, the
   // templates and the kernel settings only: rebuilt then, not every frame, and the
@@ -395,6 +395,15 @@ std::string TransportUpdate::UpdateParts(
     t.TexToDataset[i] = t.TexToWorld[i];
     t.TexToIndex[i] = (i % 5 == 0) ? 1.0 : 0.0;
   }
+  // VTK 9.1 crops a vtkMultiVolume in coordinates of its own: with planes that keep the
+  // plate of a plate-and-ball scene in the world and in the multi-volume's data
+  // coordinates, it drew nothing (the stock mapper too). The light does not follow it.
+  if (source.Cropping)
+  {
+    warn("Scatterer-template illumination does not crop the light of a vtkMultiVolume "
+         "(VTK 9.1 crops its picture in coordinates the light cannot follow): cropped "
+         "matter still casts shadows.");
+  }
   return "";
 }
 
@@ -571,7 +580,7 @@ void TransportUpdate::UpdateGeometry(vtkVolume* vol, const FramePlan& plan)
 }
 
 void TransportUpdate::UpdateClipping(
-  const FramePlan& plan, const TransportSource& source, const IlluminationParameters& parameters)
+  const TransportSource& source, const IlluminationParameters& parameters, bool multiVolume)
 {
   vtkScattererTransportVolume::Inputs& t = this->Inputs;
   t.ClipPlanes.clear();
@@ -588,8 +597,7 @@ void TransportUpdate::UpdateClipping(
           static_cast<float>(-(n[0] * o[0] + n[1] * o[1] + n[2] * o[2])) });
     }
   }
-  // VTK 9.1 does not crop a vtkMultiVolume.
-  t.Cropping = source.Cropping && !parameters.CroppedMatterCastsShadows && plan.Parts.empty();
+  t.Cropping = source.Cropping && !parameters.CroppedMatterCastsShadows && !multiVolume;
   t.CropFlags = source.CropFlags;
   for (int a = 0; a < 3; ++a)
   {

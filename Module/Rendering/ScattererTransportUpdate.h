@@ -119,9 +119,9 @@ private:
   std::string UpdateParts(const FramePlan& plan, const TransportSource& source, WarnOnce& warn);
   /** Where the volume texture lies (texture -> dataset -> world). */
   void UpdateGeometry(vtkVolume* volume, const FramePlan& plan);
-  /** The clipping planes and the cropping region. */
+  /** The clipping planes and the cropping region (not of a vtkMultiVolume). */
   void UpdateClipping(
-    const FramePlan& plan, const TransportSource& source, const IlluminationParameters& parameters);
+    const TransportSource& source, const IlluminationParameters& parameters, bool multiVolume);
   /** The key of the medium, material and kernel tables' inputs. */
   std::string TablesKey(vtkVolume* volume, const FramePlan& plan,
     const IlluminationParameters& parameters, const TemplateCache& templates) const;

@@ -6,10 +6,9 @@
 
 #include "vtkScattererTransportVolume.h" // for Inputs
 
-#include <vector> // for ScopedVolume::Parts
-
 #include <memory> // for std::unique_ptr
 #include <string>
+#include <vector> // for ScopedVolume::Parts
 
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;

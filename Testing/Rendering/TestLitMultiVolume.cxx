@@ -19,6 +19,7 @@
 #include "vtkNew.h"
 #include "vtkOpenGLGPUVolumeRayCastMapper.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkPlane.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkScattererTemplateVolumeMapper.h"
@@ -355,4 +356,28 @@ TEST(LitMultiVolume, AnInputOfZeroScaleRendersAsStockWithOneWarning)
     scatterer_testing::LastWarning(warnings).find("zero spacing or scale"), std::string::npos)
     << scatterer_testing::LastWarning(warnings);
   EXPECT_EQ(scatterer_testing::MaxDifference(first, expected), 0);
+}
+
+TEST(LitMultiVolume, ClippedInputCastsNoShadow)
+{
+  // VTK 9.1 clips a vtkMultiVolume's inputs: clipped-away matter neither shows nor casts a
+  // shadow, so the plate is lit as with no ball at all.
+  const auto render = [](bool emptyBall, vtkPlane* plane)
+  {
+    vtkNew<vtkScattererTemplateVolumeMapper> ours;
+    MultiScene scene(ours, 0.6, emptyBall);
+    if (plane)
+    {
+      ours->AddClippingPlane(plane);
+    }
+    return scatterer_testing::RenderSceneOnce(scene.Renderer, ours);
+  };
+  vtkNew<vtkPlane> plane; // keeps z < 16: the plate, not the ball
+  plane->SetOrigin(0.0, 0.0, 16.0);
+  plane->SetNormal(0.0, 0.0, -1.0);
+  const auto d = scatterer_testing::CompareRgb(render(false, plane), render(true, nullptr), 16);
+  std::printf(
+    "clipped ball vs no ball: mean %.3f, %.2f%% over 16 levels\n", d.Mean, 100.0 * d.FractionOver);
+  EXPECT_LT(d.Mean, 0.5) << "clipped matter still shades the plate";
+  EXPECT_LT(d.FractionOver, 0.01);
 }
