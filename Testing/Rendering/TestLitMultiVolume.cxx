@@ -381,3 +381,25 @@ TEST(LitMultiVolume, ClippedInputCastsNoShadow)
   EXPECT_LT(d.Mean, 0.5) << "clipped matter still shades the plate";
   EXPECT_LT(d.FractionOver, 0.01);
 }
+
+TEST(LitMultiVolume, CroppingSaysOnceThatTheLightIsNotCropped)
+{
+  vtkNew<vtkScattererTemplateVolumeMapper> ours;
+  MultiScene scene(ours);
+  ours->CroppingOn();
+  ours->SetCroppingRegionPlanes(0.0, 47.0, 0.0, 47.0, 0.0, 16.0);
+  vtkNew<vtkTest::ErrorObserver> warnings;
+  ours->AddObserver(vtkCommand::WarningEvent, warnings);
+  vtkRenderWindow* window = scatterer_testing::SharedWindow();
+  window->AddRenderer(scene.Renderer);
+  scatterer_testing::RenderAndGrab(window);
+  scatterer_testing::RenderAndGrab(window);
+  window->RemoveRenderer(scene.Renderer);
+  ours->ReleaseGraphicsResources(window);
+  EXPECT_EQ(ours->GetLastShaderFeatures().find("stock"), std::string::npos)
+    << ours->GetLastShaderFeatures();
+  EXPECT_EQ(scatterer_testing::WarningCount(warnings), 1u);
+  EXPECT_NE(
+    scatterer_testing::LastWarning(warnings).find("does not crop the light"), std::string::npos)
+    << scatterer_testing::LastWarning(warnings);
+}
