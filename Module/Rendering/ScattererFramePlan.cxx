@@ -432,13 +432,14 @@ vtkVolumeProperty* FramePlanner::MaterialProperty(
     vtkVolumeProperty* view = this->ComponentView;
     this->Transfer2DKey.Clear();
     view->SetScalarOpacity(property->GetScalarOpacity(c));
-    if (property->GetColorChannels(c) == 1)
+    const scatterer_scene::ColourFunction colour = scatterer_scene::ColourFunctionOf(property, c);
+    if (colour.Grey)
     {
-      view->SetColor(property->GetGrayTransferFunction(c));
+      view->SetColor(colour.Grey);
     }
     else
     {
-      view->SetColor(property->GetRGBTransferFunction(c));
+      view->SetColor(colour.Rgb);
     }
     view->SetScalarOpacityUnitDistance(property->GetScalarOpacityUnitDistance(c));
     return view;
