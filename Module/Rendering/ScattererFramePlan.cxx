@@ -432,14 +432,13 @@ vtkVolumeProperty* FramePlanner::MaterialProperty(
     vtkVolumeProperty* view = this->ComponentView;
     this->Transfer2DKey.Clear();
     view->SetScalarOpacity(property->GetScalarOpacity(c));
-    const scatterer_scene::ColourFunction colour = scatterer_scene::ColourFunctionOf(property, c);
-    if (colour.Grey)
+    if (property->GetColorChannels(c) == 1)
     {
-      view->SetColor(colour.Grey);
+      view->SetColor(property->GetGrayTransferFunction(c));
     }
     else
     {
-      view->SetColor(colour.Rgb);
+      view->SetColor(property->GetRGBTransferFunction(c));
     }
     view->SetScalarOpacityUnitDistance(property->GetScalarOpacityUnitDistance(c));
     return view;

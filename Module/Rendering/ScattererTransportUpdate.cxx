@@ -106,9 +106,10 @@ constexpr int kMaxBoxTexels = 1024;
 // One medium row: set @p f's functions over component @p c's range.
 void TabulateRow(float* row, vtkVolumeProperty* property, int f, const float range[2])
 {
-  const scatterer_scene::ColourFunction colour = scatterer_scene::ColourFunctionOf(property, f);
-  TabulateMedium(row, colour.Rgb, colour.Grey, property->GetScalarOpacity(f), range[0], range[1],
-    UnitDistance(property, f));
+  const bool gray = property->GetColorChannels(f) == 1;
+  TabulateMedium(row, gray ? nullptr : property->GetRGBTransferFunction(f),
+    gray ? property->GetGrayTransferFunction(f) : nullptr, property->GetScalarOpacity(f), range[0],
+    range[1], UnitDistance(property, f));
 }
 }
 
@@ -416,9 +417,11 @@ std::string TransportUpdate::TablesKey(vtkVolume* vol, const FramePlan& plan,
   // per independent component), or each input's of a vtkMultiVolume.
   const auto addFunctions = [&key](vtkVolumeProperty* property, int f)
   {
-    const scatterer_scene::ColourFunction colour = scatterer_scene::ColourFunctionOf(property, f);
-    key << '|' << property->GetScalarOpacity(f)->GetMTime() << ',' << colour.Function()->GetMTime()
-        << ',' << (colour.Grey != nullptr) << ',' << UnitDistance(property, f);
+    const bool gray = property->GetColorChannels(f) == 1;
+    key << '|' << property->GetScalarOpacity(f)->GetMTime() << ','
+        << (gray ? property->GetGrayTransferFunction(f)->GetMTime()
+                 : property->GetRGBTransferFunction(f)->GetMTime())
+        << ',' << gray << ',' << UnitDistance(property, f);
   };
   vtkVolumeProperty* property = vol->GetProperty();
   if (plan.Parts.empty())

@@ -47,25 +47,6 @@ SceneMaterial Make(double lo, double hi, double alphaUnit, double n, const doubl
 }
 }
 
-vtkObject* ColourFunction::Function() const
-{
-  return this->Grey ? static_cast<vtkObject*>(this->Grey) : static_cast<vtkObject*>(this->Rgb);
-}
-
-ColourFunction ColourFunctionOf(vtkVolumeProperty* property, int f)
-{
-  ColourFunction colour;
-  if (property->GetColorChannels(f) == 1)
-  {
-    colour.Grey = property->GetGrayTransferFunction(f);
-  }
-  else
-  {
-    colour.Rgb = property->GetRGBTransferFunction(f);
-  }
-  return colour;
-}
-
 double MaxOpacity(vtkPiecewiseFunction* opacity, double lo, double hi)
 {
   double best = std::max(opacity->GetValue(lo), opacity->GetValue(hi));
@@ -155,22 +136,16 @@ MaterialSet BuildMaterials(const std::vector<RequestedMaterial>& requested,
     set.Dropped = static_cast<int>(intervals.size() - kept.size());
     intervals = kept;
   }
-  const ColourFunction colour = ColourFunctionOf(property, 0);
+  vtkColorTransferFunction* colorTF = property->GetRGBTransferFunction(0);
   for (size_t k = 0; k < intervals.size(); ++k)
   {
     const Interval& iv = intervals[k];
     // Half a sample of slack on both ends so the interval's own edges classify.
     const double lo = iv.Lo - 0.5 * step, hi = iv.Hi + 0.5 * step;
-    // The colour at the interval's opacity-weighted centre (a grey function's grey).
-    const double centre = iv.WeightedScalar / iv.Weight;
     double color[3] = { 1.0, 1.0, 1.0 };
-    if (colour.Grey)
+    if (colorTF && property->GetColorChannels(0) == 3)
     {
-      color[0] = color[1] = color[2] = colour.Grey->GetValue(centre);
-    }
-    else if (colour.Rgb)
-    {
-      colour.Rgb->GetColor(centre, color);
+      colorTF->GetColor(iv.WeightedScalar / iv.Weight, color);
     }
     const double n = scatterer::defaultRefractiveIndex(static_cast<int>(k));
     set.Materials.push_back(Make(lo, hi, iv.MaxAlpha, n, color, dataRange));

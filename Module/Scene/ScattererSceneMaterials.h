@@ -14,9 +14,7 @@
 #include <string>
 #include <vector>
 
-class vtkColorTransferFunction;
 class vtkDataArray;
-class vtkObject;
 class vtkPiecewiseFunction;
 class vtkVolumeProperty;
 
@@ -81,18 +79,6 @@ struct Unassigned
  */
 Unassigned CountUnassigned(vtkDataArray* scalars, const MaterialSet& set,
   vtkVolumeProperty* property, const double dataRange[2], int component);
-
-/**
- * The colour function VTK reads for transfer-function set @p f of a volume property:
- * its grey one (one colour channel) or its RGB one. Exactly one of the two is set.
- */
-struct ColourFunction
-{
-  vtkColorTransferFunction* Rgb = nullptr;
-  vtkPiecewiseFunction* Grey = nullptr;
-  vtkObject* Function() const; ///< the one that is set
-};
-ColourFunction ColourFunctionOf(vtkVolumeProperty* property, int f);
 
 /** The largest value of @p opacity over [lo, hi] (its ends and the nodes between). */
 double MaxOpacity(vtkPiecewiseFunction* opacity, double lo, double hi);

@@ -6,7 +6,6 @@
 #include "ScattererTestVolumes.h"
 
 #include "vtkCamera.h"
-#include "vtkColorTransferFunction.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkNew.h"
@@ -25,9 +24,7 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <functional>
 #include <string>
 
@@ -114,18 +111,6 @@ struct TransportScene
     std::vector<float> t = this->Mapper->GetTransportVolume()->ReadTransmittance(gl, 0);
     window->RemoveRenderer(this->Renderer);
     return t;
-  }
-
-  // Renders once in the shared window and reads the received light back (RGB, grid order).
-  std::vector<float> ReceivedLight()
-  {
-    vtkRenderWindow* window = scatterer_testing::SharedWindow();
-    window->AddRenderer(this->Renderer);
-    window->Render();
-    auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window);
-    std::vector<float> light = this->Mapper->GetTransportVolume()->ReadLight(gl);
-    window->RemoveRenderer(this->Renderer);
-    return light;
   }
 
   float At(const std::vector<float>& t, int i, int j, int k) const
@@ -472,47 +457,4 @@ TEST(TransportVolume, InteractiveFramesKeepTheStillVolumeUnlessTheyMustRebuild)
   transport->GetDimensions(dims);
   EXPECT_EQ(dims[0], stillDims);
   window->RemoveRenderer(scene.Renderer);
-}
-
-TEST(TransportVolume, GreyColourFunctionIsTheAlbedoAsItsRgbEqual)
-{
-  // A property with one colour channel (a grey function) colours the medium as the RGB
-  // function of the same grey does; the albedo matters to the light (the scattered part).
-  const int n = 24;
-  auto image = MakeVolume(n, 1.0, Slab(6, 17));
-  const auto lightWith = [&image](vtkObject* colour)
-  {
-    TransportScene scene(image, 0.3);
-    if (auto* grey = vtkPiecewiseFunction::SafeDownCast(colour))
-    {
-      scene.Property->SetColor(grey);
-    }
-    else
-    {
-      scene.Property->SetColor(vtkColorTransferFunction::SafeDownCast(colour));
-    }
-    scene.SetDirectional(0, 0, 1);
-    return scene.ReceivedLight();
-  };
-  vtkNew<vtkPiecewiseFunction> grey;
-  grey->AddPoint(0, 0.4);
-  grey->AddPoint(255, 0.4);
-  vtkNew<vtkColorTransferFunction> rgb, white;
-  rgb->AddRGBPoint(0, 0.4, 0.4, 0.4);
-  rgb->AddRGBPoint(255, 0.4, 0.4, 0.4);
-  white->AddRGBPoint(0, 1.0, 1.0, 1.0);
-  white->AddRGBPoint(255, 1.0, 1.0, 1.0);
-  const auto fromGrey = lightWith(grey), fromRgb = lightWith(rgb), fromWhite = lightWith(white);
-  ASSERT_EQ(fromGrey.size(), fromRgb.size());
-  ASSERT_EQ(fromGrey.size(), fromWhite.size());
-  ASSERT_FALSE(fromGrey.empty());
-  float greyVsRgb = 0.0f, greyVsWhite = 0.0f;
-  for (size_t i = 0; i < fromGrey.size(); ++i)
-  {
-    greyVsRgb = std::max(greyVsRgb, std::abs(fromGrey[i] - fromRgb[i]));
-    greyVsWhite = std::max(greyVsWhite, std::abs(fromGrey[i] - fromWhite[i]));
-  }
-  std::printf("received light, grey vs its RGB: %g; grey vs white: %g\n", greyVsRgb, greyVsWhite);
-  EXPECT_LT(greyVsRgb, 1e-4f) << "a grey colour function is not read as VTK reads it";
-  EXPECT_GT(greyVsWhite, 1e-2f) << "the albedo does not reach the light: the test sees nothing";
 }
