@@ -152,7 +152,7 @@ bool vtkScattererLightExchange::vtkInternals::UpdateGrid(vtkImageData* piece, vt
   // The transport's own medium table (its fourth channel is sigma_t).
   std::vector<float> medium(4 * static_cast<size_t>(scatterer_render::kMediumTableSize));
   scatterer_render::TabulateMedium(
-    medium.data(), nullptr, nullptr, opacity, range[0], range[0] + span, unit);
+    medium.data(), nullptr, opacity, range[0], range[0] + span, unit);
   grid.table.resize(scatterer_render::kMediumTableSize);
   for (size_t i = 0; i < grid.table.size(); ++i)
   {

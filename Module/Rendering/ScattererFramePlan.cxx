@@ -1,5 +1,6 @@
 #include "ScattererFramePlan.h"
 
+#include "ScattererColourFunction.h"
 #include "ScattererIlluminationParameters.h"
 #include "ScattererTransfer2D.h"
 #include "ScattererWarnOnce.h"
@@ -432,14 +433,7 @@ vtkVolumeProperty* FramePlanner::MaterialProperty(
     vtkVolumeProperty* view = this->ComponentView;
     this->Transfer2DKey.Clear();
     view->SetScalarOpacity(property->GetScalarOpacity(c));
-    if (property->GetColorChannels(c) == 1)
-    {
-      view->SetColor(property->GetGrayTransferFunction(c));
-    }
-    else
-    {
-      view->SetColor(property->GetRGBTransferFunction(c));
-    }
+    view->SetColor(scatterer_scene::RayCasterColour(property, c));
     view->SetScalarOpacityUnitDistance(property->GetScalarOpacityUnitDistance(c));
     return view;
   }
@@ -450,7 +444,7 @@ vtkVolumeProperty* FramePlanner::MaterialProperty(
   const std::set<int> labels = property->GetLabelMapLabels();
   KeyWriter key;
   key << property->GetScalarOpacity(0)->GetMTime() << '|'
-      << property->GetRGBTransferFunction(0)->GetMTime() << '|' << derivation[0] << ','
+      << scatterer_scene::RayCasterColour(property, 0)->GetMTime() << '|' << derivation[0] << ','
       << derivation[1];
   for (int label : labels)
   {
@@ -474,7 +468,7 @@ vtkVolumeProperty* FramePlanner::MaterialProperty(
       }
       visible->AddPoint(x, alpha);
     }
-    this->LabelUnion->SetColor(property->GetRGBTransferFunction(0));
+    this->LabelUnion->SetColor(scatterer_scene::RayCasterColour(property, 0));
     this->LabelUnion->SetScalarOpacity(visible);
     this->LabelUnionKey.Record(key.Key());
   }

@@ -1,5 +1,6 @@
 #include "ScattererTransportUpdate.h"
 
+#include "ScattererColourFunction.h"
 #include "ScattererFramePlan.h"
 #include "ScattererIlluminationParameters.h"
 #include "ScattererTemplateCache.h"
@@ -33,18 +34,14 @@ namespace scatterer_render
 {
 // One row of the medium over the table coordinate: albedo from @p color (white when
 // none), extinction from @p opacity per @p unit distance.
-void TabulateMedium(float* row, vtkColorTransferFunction* color, vtkPiecewiseFunction* gray,
-  vtkPiecewiseFunction* opacity, double lo, double hi, double unit)
+void TabulateMedium(float* row, vtkColorTransferFunction* color, vtkPiecewiseFunction* opacity,
+  double lo, double hi, double unit)
 {
   for (int i = 0; i < kMediumTableSize; ++i)
   {
     const double value = lo + (hi - lo) * i / (kMediumTableSize - 1.0);
     double rgb[3] = { 1.0, 1.0, 1.0 };
-    if (gray)
-    {
-      rgb[0] = rgb[1] = rgb[2] = gray->GetValue(value);
-    }
-    else if (color)
+    if (color)
     {
       color->GetColor(value, rgb);
     }
@@ -106,10 +103,8 @@ constexpr int kMaxBoxTexels = 1024;
 // One medium row: set @p f's functions over component @p c's range.
 void TabulateRow(float* row, vtkVolumeProperty* property, int f, const float range[2])
 {
-  const bool gray = property->GetColorChannels(f) == 1;
-  TabulateMedium(row, gray ? nullptr : property->GetRGBTransferFunction(f),
-    gray ? property->GetGrayTransferFunction(f) : nullptr, property->GetScalarOpacity(f), range[0],
-    range[1], UnitDistance(property, f));
+  TabulateMedium(row, scatterer_scene::RayCasterColour(property, f), property->GetScalarOpacity(f),
+    range[0], range[1], UnitDistance(property, f));
 }
 }
 
@@ -417,11 +412,9 @@ std::string TransportUpdate::TablesKey(vtkVolume* vol, const FramePlan& plan,
   // per independent component), or each input's of a vtkMultiVolume.
   const auto addFunctions = [&key](vtkVolumeProperty* property, int f)
   {
-    const bool gray = property->GetColorChannels(f) == 1;
     key << '|' << property->GetScalarOpacity(f)->GetMTime() << ','
-        << (gray ? property->GetGrayTransferFunction(f)->GetMTime()
-                 : property->GetRGBTransferFunction(f)->GetMTime())
-        << ',' << gray << ',' << UnitDistance(property, f);
+        << scatterer_scene::RayCasterColour(property, f)->GetMTime() << ','
+        << UnitDistance(property, f);
   };
   vtkVolumeProperty* property = vol->GetProperty();
   if (plan.Parts.empty())
@@ -792,8 +785,7 @@ void TransportUpdate::UpdateVolumeTables(vtkVolume* vol, const FramePlan& plan)
       {
         continue;
       }
-      TabulateMedium(
-        row(label), property->GetLabelColor(label), nullptr, labelOpacity, lo, hi, unit);
+      TabulateMedium(row(label), property->GetLabelColor(label), labelOpacity, lo, hi, unit);
     }
   }
   const double tableRange[2] = { lo, hi };

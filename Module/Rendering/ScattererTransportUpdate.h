@@ -45,11 +45,11 @@ constexpr int kMediumTableSize = 4096;
 
 /**
  * One row of the medium over [lo, hi] (kMediumTableSize entries of 4 floats): albedo rgb
- * from @p color or @p gray (white when neither), and sigma_t per world unit from
- * @p opacity in VTK's convention with @p unit the ScalarOpacityUnitDistance.
+ * from @p color (white when none), and sigma_t per world unit from @p opacity in VTK's
+ * convention with @p unit the ScalarOpacityUnitDistance.
  */
-void TabulateMedium(float* row, vtkColorTransferFunction* color, vtkPiecewiseFunction* gray,
-  vtkPiecewiseFunction* opacity, double lo, double hi, double unit);
+void TabulateMedium(float* row, vtkColorTransferFunction* color, vtkPiecewiseFunction* opacity,
+  double lo, double hi, double unit);
 
 /** What the transport reads of the mapper besides the plan (its public state). */
 struct TransportSource

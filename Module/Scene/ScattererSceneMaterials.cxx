@@ -1,5 +1,6 @@
 #include "ScattererSceneMaterials.h"
 
+#include "ScattererColourFunction.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkDataArray.h"
 #include "vtkPiecewiseFunction.h"
@@ -136,17 +137,14 @@ MaterialSet BuildMaterials(const std::vector<RequestedMaterial>& requested,
     set.Dropped = static_cast<int>(intervals.size() - kept.size());
     intervals = kept;
   }
-  vtkColorTransferFunction* colorTF = property->GetRGBTransferFunction(0);
+  vtkColorTransferFunction* colorTF = RayCasterColour(property, 0);
   for (size_t k = 0; k < intervals.size(); ++k)
   {
     const Interval& iv = intervals[k];
     // Half a sample of slack on both ends so the interval's own edges classify.
     const double lo = iv.Lo - 0.5 * step, hi = iv.Hi + 0.5 * step;
-    double color[3] = { 1.0, 1.0, 1.0 };
-    if (colorTF && property->GetColorChannels(0) == 3)
-    {
-      colorTF->GetColor(iv.WeightedScalar / iv.Weight, color);
-    }
+    double color[3];
+    colorTF->GetColor(iv.WeightedScalar / iv.Weight, color);
     const double n = scatterer::defaultRefractiveIndex(static_cast<int>(k));
     set.Materials.push_back(Make(lo, hi, iv.MaxAlpha, n, color, dataRange));
   }

@@ -2,10 +2,12 @@
 // homogeneous slab for axis-aligned, oblique and positional lights; a sphere's
 // shadow on a plate where geometry puts it; no shadow from cropped, clipped or
 // masked-out material. The transmittance is read back from the GPU (llvmpipe here).
+#include "ScattererErrorObserver.h"
 #include "ScattererRenderHarness.h"
 #include "ScattererTestVolumes.h"
 
 #include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkNew.h"
@@ -24,7 +26,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <string>
 
@@ -111,6 +115,18 @@ struct TransportScene
     std::vector<float> t = this->Mapper->GetTransportVolume()->ReadTransmittance(gl, 0);
     window->RemoveRenderer(this->Renderer);
     return t;
+  }
+
+  // Renders once in the shared window and reads the received light back (RGB, grid order).
+  std::vector<float> ReceivedLight()
+  {
+    vtkRenderWindow* window = scatterer_testing::SharedWindow();
+    window->AddRenderer(this->Renderer);
+    window->Render();
+    auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window);
+    std::vector<float> light = this->Mapper->GetTransportVolume()->ReadLight(gl);
+    window->RemoveRenderer(this->Renderer);
+    return light;
   }
 
   float At(const std::vector<float>& t, int i, int j, int k) const
@@ -457,4 +473,63 @@ TEST(TransportVolume, InteractiveFramesKeepTheStillVolumeUnlessTheyMustRebuild)
   transport->GetDimensions(dims);
   EXPECT_EQ(dims[0], stillDims);
   window->RemoveRenderer(scene.Renderer);
+}
+
+TEST(TransportVolume, GreyColourFunctionIsLitWithTheColoursTheRayCasterShows)
+{
+  // VTK 9.1's ray caster never reads a grey colour function: it colours with the RGB one,
+  // its default black-to-white ramp over 0-1024 here (ScattererColourFunction.h). The
+  // medium's albedo (it colours the scattered light) must be that ramp too, on the first
+  // frame as on the next, so a second frame rebuilds nothing. Nothing to warn about: the
+  // picture and its light agree.
+  const int n = 24;
+  auto image = MakeVolume(n, 1.0, Slab(6, 17));
+  vtkNew<vtkPiecewiseFunction> grey;
+  grey->AddPoint(0, 0.9);
+  grey->AddPoint(255, 0.9);
+  TransportScene greyScene(image, 0.3);
+  greyScene.Property->SetColor(grey);
+  greyScene.SetDirectional(0, 0, 1);
+  vtkNew<vtkTest::ErrorObserver> warnings;
+  greyScene.Mapper->AddObserver(vtkCommand::WarningEvent, warnings);
+  vtkRenderWindow* window = scatterer_testing::SharedWindow();
+  window->AddRenderer(greyScene.Renderer);
+  window->Render();
+  vtkScattererTransportVolume* transport = greyScene.Mapper->GetTransportVolume();
+  const std::vector<float> fromGrey =
+    transport->ReadLight(vtkOpenGLRenderWindow::SafeDownCast(window));
+  const int builds = transport->GetBuildCount();
+  greyScene.Renderer->GetActiveCamera()->Azimuth(20);
+  window->Render();
+  EXPECT_EQ(transport->GetBuildCount(), builds) << "the second frame read other colours";
+  EXPECT_EQ(scatterer_testing::WarningCount(warnings), 0u)
+    << scatterer_testing::LastWarning(warnings);
+  window->RemoveRenderer(greyScene.Renderer);
+
+  const auto lightWith = [&image](vtkColorTransferFunction* colour)
+  {
+    TransportScene scene(image, 0.3);
+    scene.Property->SetColor(colour);
+    scene.SetDirectional(0, 0, 1);
+    return scene.ReceivedLight();
+  };
+  vtkNew<vtkColorTransferFunction> ramp, greyAsRgb;
+  ramp->AddRGBPoint(0, 0.0, 0.0, 0.0);
+  ramp->AddRGBPoint(1024, 1.0, 1.0, 1.0);
+  greyAsRgb->AddRGBPoint(0, 0.9, 0.9, 0.9);
+  greyAsRgb->AddRGBPoint(255, 0.9, 0.9, 0.9);
+  const auto fromRamp = lightWith(ramp), fromGreyAsRgb = lightWith(greyAsRgb);
+  ASSERT_FALSE(fromGrey.empty());
+  ASSERT_EQ(fromGrey.size(), fromRamp.size());
+  ASSERT_EQ(fromGrey.size(), fromGreyAsRgb.size());
+  float vsRamp = 0.0f, vsGreyAsRgb = 0.0f;
+  for (size_t i = 0; i < fromGrey.size(); ++i)
+  {
+    vsRamp = std::max(vsRamp, std::abs(fromGrey[i] - fromRamp[i]));
+    vsGreyAsRgb = std::max(vsGreyAsRgb, std::abs(fromGrey[i] - fromGreyAsRgb[i]));
+  }
+  std::printf(
+    "received light, grey vs VTK's ramp: %g; vs the grey as RGB: %g\n", vsRamp, vsGreyAsRgb);
+  EXPECT_LT(vsRamp, 1e-4f) << "the light is not coloured as the ray caster colours";
+  EXPECT_GT(vsGreyAsRgb, 1e-2f) << "the albedo does not reach the light: the test sees nothing";
 }
