@@ -27,6 +27,7 @@
 #include "vtkGPUVolumeRayCastMapper.h"
 #include "vtkImageData.h"
 #include "vtkImageResize.h"
+#include "vtkLightKit.h"
 #include "vtkMultiVolume.h"
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
@@ -59,6 +60,7 @@ struct Config
   bool Orbit = false;       // headlight + camera turning 2 degrees a frame: the light moves
   bool Interactive = false; // frames as VTK's interactor asks while dragging (rate 20/s)
   bool Multi = false;       // a vtkMultiVolume: the CT head and a ball above it (MultiScene)
+  bool LightKit = false;    // orbit under vtkLightKit (5 camera lights, ParaView's default)
 };
 
 std::vector<Config> Configs()
@@ -70,6 +72,8 @@ std::vector<Config> Configs()
     { "transport_still", "template" },
     { "transport_orbit_headlight", "template", "transport", true },
     { "transport_orbit_headlight_interactive", "template", "transport", true, true },
+    { "transport_orbit_lightkit", "template", "transport", true, false, false, true },
+    { "transport_orbit_lightkit_interactive", "template", "transport", true, true, false, true },
     { "persample_still", "template", "per-sample" },
     { "stock_multivolume", "stock", "transport", false, false, true },
     { "transport_multivolume_still", "template", "transport", false, false, true },
@@ -269,6 +273,12 @@ int main(int argc, char* argv[])
     {
       renderer->RemoveAllLights();
       renderer->AutomaticLightCreationOn(); // VTK's headlight: it moves with the camera
+    }
+    if (config.LightKit)
+    {
+      renderer->AutomaticLightCreationOff();
+      vtkNew<vtkLightKit> kit;
+      kit->AddLightsToRenderer(renderer);
     }
     window->GetRenderers()->RemoveAllItems();
     window->AddRenderer(renderer);

@@ -2,6 +2,7 @@
 
 #include "ScattererTransportFramebuffer.h"
 #include "ScattererTransportGrid.h"
+#include "ScattererTransportLightPasses.h"
 #include "ScattererTransportPass.h"
 #include "ScattererTransportPrograms.h"
 #include "ScattererTransportProgress.h"
@@ -41,7 +42,8 @@ struct CoarseUniforms
 
 // Pass 3a: the coarse medium (mean albedo, sigma_t of each block), the coarse source
 // (mean light scattered once) and the ambient occlusion of each block's centre.
-void Coarsen(const TransportPass& pass, const CoarseGrid& coarse, const CoarseUniforms& u)
+void Coarsen(const TransportPass& pass, const SweepPlan& plan, const CoarseGrid& coarse,
+  const CoarseUniforms& u)
 {
   TransportTextures& textures = pass.Textures;
   vtkShaderProgram* program = UseProgram(pass.Window, pass.Programs.Coarsen.get());
@@ -53,7 +55,7 @@ void Coarsen(const TransportPass& pass, const CoarseGrid& coarse, const CoarseUn
   program->SetUniformi("st_block", coarse.Block);
   ScopedVolume volume(program, pass.In);
   ScopedSampler medium(program, "st_medium", pass.Tables.Medium);
-  ScopedSampler source(program, "st_source", textures.Source);
+  ScopedArrivingLight arriving(program, pass, plan);
   DrawLayers(pass.Framebuffer, pass.Programs.Coarsen.get(), program,
     { textures.CoarseMedium, textures.CoarseSource }, coarse.Dims[2]);
   pass.Progress.StepDone();
@@ -124,7 +126,7 @@ int DiffusionIterations(const vtkScattererTransportVolume::Inputs& in)
   return in.MultipleScattering > 0.0f ? std::max(1, in.DiffusionIterations) : 0;
 }
 
-bool AddScatteredAndAmbientLight(const TransportPass& pass, std::string& why)
+bool AddScatteredAndAmbientLight(const TransportPass& pass, const SweepPlan& plan, std::string& why)
 {
   const CoarseGrid coarse = CoarseGrid::Over(pass.Grid, pass.In.Downsample);
   if (!pass.Textures.AllocateCoarse(pass.Window, coarse.Dims, why))
@@ -135,7 +137,7 @@ bool AddScatteredAndAmbientLight(const TransportPass& pass, std::string& why)
   vtkOpenGLState* state = pass.Window->GetState();
   state->vtkglDisable(GL_BLEND);
   state->vtkglViewport(0, 0, coarse.Dims[0], coarse.Dims[1]);
-  Coarsen(pass, coarse, uniforms);
+  Coarsen(pass, plan, coarse, uniforms);
   vtkTextureObject* fluence = Diffuse(pass, coarse, uniforms, DiffusionIterations(pass.In));
   Combine(pass, coarse, uniforms, fluence);
   return true;

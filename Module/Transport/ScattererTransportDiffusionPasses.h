@@ -1,4 +1,4 @@
-// The passes run once per build after the lights' gathers: the light scattered once is
+// The passes run once per build after the lights' gather: the light scattered once is
 // spread by a diffusion solve on a coarser grid (multiple scattering) and added, with
 // VTK's ambient term times its occlusion, to the light each fine texel receives.
 #ifndef ScattererTransportDiffusionPasses_h
@@ -10,6 +10,7 @@
 
 namespace scatterer_gpu
 {
+struct SweepPlan;
 struct TransportPass;
 
 /** Jacobi iterations the build runs for @p inputs (0: no multiple scattering). */
@@ -18,14 +19,17 @@ int DiffusionIterations(const vtkScattererTransportVolume::Inputs& inputs);
 /**
  * Adds the multiply scattered light and the occluded ambient light to
  * pass.Textures.Light:
- * - pass 3a (scatterer_transport_coarsen.glsl): the medium, the source S and the
- *   ambient occlusion on the coarse grid, each the mean over a block of fine texels;
+ * - pass 3a (scatterer_transport_coarsen.glsl): the medium, the source
+ *   S = sigma_t albedo A (A the light arriving unscattered, the direct light swept
+ *   last, by @p plan) and the ambient occlusion on the coarse grid, each the mean over
+ *   a block of fine texels;
  * - pass 3 (scatterer_transport_diffuse.glsl), DiffusionIterations() Jacobi iterations of
  *     -div(D grad phi) + sigma_a phi = S,   D = 1 / (3 sigma_t),  sigma_a = sigma_t (1 - albedo)
  * - pass 4 (scatterer_transport_combine.glsl): L += MultipleScattering phi + ambient AO.
  * False with @p why set if the coarse textures cannot be allocated.
  */
-bool AddScatteredAndAmbientLight(const TransportPass& pass, std::string& why);
+bool AddScatteredAndAmbientLight(
+  const TransportPass& pass, const SweepPlan& plan, std::string& why);
 }
 
 #endif

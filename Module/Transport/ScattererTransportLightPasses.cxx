@@ -118,14 +118,38 @@ bool SweepTransmittance(const TransportPass& pass, const vtkScattererTransportVo
   return true;
 }
 
-void GatherLight(const TransportPass& pass, const vtkScattererTransportVolume::Light& light,
+int DirectLight(const vtkScattererTransportVolume::Inputs& in)
+{
+  for (int l = static_cast<int>(in.Lights.size()) - 1; l >= 0; --l)
+  {
+    if (!in.Lights[static_cast<size_t>(l)].Positional)
+    {
+      return l;
+    }
+  }
+  return -1;
+}
+
+ScopedArrivingLight::ScopedArrivingLight(
+  vtkShaderProgram* program, const TransportPass& pass, const SweepPlan& plan)
+  : Arriving(program, "st_arriving", pass.Textures.Arriving)
+  , Transmittance(program, "st_transmittance", pass.Textures.Transmittance)
+{
+  const int direct = DirectLight(pass.In);
+  if (direct >= 0)
+  {
+    SetSweepOrder(program, plan);
+    program->SetUniform3f("st_directColor", pass.In.Lights[static_cast<size_t>(direct)].Color);
+  }
+}
+
+void AddArrivingLight(const TransportPass& pass, const vtkScattererTransportVolume::Light& light,
   const SweepPlan& plan, bool first)
 {
   const vtkScattererTransportVolume::Inputs& in = pass.In;
-  vtkShaderProgram* program = UseProgram(pass.Window, pass.Programs.Gather.get());
+  vtkShaderProgram* program = UseProgram(pass.Window, pass.Programs.Arrive.get());
   SetCommonUniforms(program, pass.Grid, in);
   SetSweepOrder(program, plan);
-  SetMaterialUniforms(program, in);
   program->SetUniform3f("st_lightColor", light.Color);
   program->SetUniform3f("st_lightPosition", light.Position);
   program->SetUniform3f("st_lightFocalDirection", light.FocalDirection);
@@ -133,14 +157,11 @@ void GatherLight(const TransportPass& pass, const vtkScattererTransportVolume::L
   program->SetUniform3f("st_lightAttenuation", light.Attenuation);
   program->SetUniformf("st_lightConeCos", light.ConeCos);
   program->SetUniformf("st_lightExponent", light.Exponent);
-  ScopedVolume volume(program, in);
-  ScopedSampler medium(program, "st_medium", pass.Tables.Medium);
   ScopedSampler transmittance(program, "st_transmittance", pass.Textures.Transmittance);
-  ScopedSampler kernel(program, "st_kernel", pass.Tables.Kernel);
-  ScopedSampler materials(program, "st_materialTable", pass.Tables.Materials);
 
+  // The texture has one texel more than the grid on each side (arrive.glsl).
   vtkOpenGLState* state = pass.Window->GetState();
-  state->vtkglViewport(0, 0, pass.Grid.Dims[0], pass.Grid.Dims[1]);
+  state->vtkglViewport(0, 0, pass.Grid.Dims[0] + 2, pass.Grid.Dims[1] + 2);
   // The lights add up: the first replaces, the others blend on.
   if (first)
   {
@@ -150,7 +171,28 @@ void GatherLight(const TransportPass& pass, const vtkScattererTransportVolume::L
   {
     BlendAdditively(state);
   }
-  DrawLayers(pass.Framebuffer, pass.Programs.Gather.get(), program,
-    { pass.Textures.Light, pass.Textures.Source }, pass.Grid.Dims[2]);
+  DrawLayers(pass.Framebuffer, pass.Programs.Arrive.get(), program, { pass.Textures.Arriving },
+    pass.Grid.Dims[2] + 2);
+  state->vtkglDisable(GL_BLEND);
+}
+
+void GatherLight(const TransportPass& pass, const SweepPlan& plan)
+{
+  const vtkScattererTransportVolume::Inputs& in = pass.In;
+  vtkShaderProgram* program = UseProgram(pass.Window, pass.Programs.Gather.get());
+  SetCommonUniforms(program, pass.Grid, in);
+  SetMaterialUniforms(program, in);
+  ScopedArrivingLight arriving(program, pass, plan);
+  ScopedVolume volume(program, in);
+  ScopedSampler medium(program, "st_medium", pass.Tables.Medium);
+  ScopedSampler kernel(program, "st_kernel", pass.Tables.Kernel);
+  ScopedSampler materials(program, "st_materialTable", pass.Tables.Materials);
+
+  vtkOpenGLState* state = pass.Window->GetState();
+  state->vtkglViewport(0, 0, pass.Grid.Dims[0], pass.Grid.Dims[1]);
+  state->vtkglDisable(GL_BLEND);
+  DrawLayers(pass.Framebuffer, pass.Programs.Gather.get(), program, { pass.Textures.Light },
+    pass.Grid.Dims[2]);
+  pass.Progress.StepDone();
 }
 }

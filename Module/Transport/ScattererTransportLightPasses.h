@@ -1,18 +1,40 @@
-// The passes run once per light: the transmittance sweep (pass 1,
-// scatterer_transport_sweep.glsl) and the template in-scattering gather (pass 2,
-// scatterer_transport_gather.glsl) that adds the light's contribution to the light
-// texture and to the source of multiple scattering.
+// The passes of the lights: per light the transmittance sweep (pass 1,
+// scatterer_transport_sweep.glsl) and the light it brings to each texel (pass 2a,
+// scatterer_transport_arrive.glsl), added up, but for one directional light (the
+// direct light) swept last and read from its transmittance; then once for all lights
+// the template in-scattering gather (pass 2b, scatterer_transport_gather.glsl).
+// Passes that read the arriving light (scatterer_transport_arriving.glsl) bind it with
+// ScopedArrivingLight.
 #ifndef ScattererTransportLightPasses_h
 #define ScattererTransportLightPasses_h
 
+#include "ScattererTransportPrograms.h"  // for ScopedSampler
 #include "vtkScattererTransportVolume.h" // for Light
 
 #include <string>
+
+class vtkShaderProgram;
 
 namespace scatterer_gpu
 {
 struct SweepPlan;
 struct TransportPass;
+
+/** The direct light of @p in: its last directional light, or -1 when it has none. */
+int DirectLight(const vtkScattererTransportVolume::Inputs& in);
+
+/**
+ * Binds what scatterer_transport_arriving.glsl reads in @p program for this object's
+ * lifetime: the lights of pass 2a, and the direct light (swept last, by @p plan).
+ */
+class ScopedArrivingLight
+{
+public:
+  ScopedArrivingLight(vtkShaderProgram* program, const TransportPass& pass, const SweepPlan& plan);
+
+private:
+  ScopedSampler Arriving, Transmittance;
+};
 
 /**
  * Sweeps the transmittance T of @p light into pass.Textures.Transmittance (in sweep
@@ -25,14 +47,22 @@ bool SweepTransmittance(const TransportPass& pass, const vtkScattererTransportVo
   SweepPlan& swept, std::string& why);
 
 /**
- * Gathers the transmittance of @p light (swept by @p plan) through the materials'
- * scatterer templates into pass.Textures.Light and Source:
- *   R_l(p) = E_l a_l(p) sum_j w_j c_j T_l(p + r_j) / sum_j w_j     (single scattering)
- *   S(p) = sigma_t(p) albedo(p) E_l a_l(p) T_l(p)                   (its source)
- * replacing what they hold (@p first) or adding to it.
+ * Adds the light that @p light (swept by @p plan; not the direct light) brings to each
+ * texel, unscattered, to pass.Textures.Arriving, or replaces what it holds (@p first):
+ *   A(p) += E_l a_l(p) T_l(p)
+ * with E_l its colour and intensity, a_l(p) VTK's attenuation and spot cone.
  */
-void GatherLight(const TransportPass& pass, const vtkScattererTransportVolume::Light& light,
+void AddArrivingLight(const TransportPass& pass, const vtkScattererTransportVolume::Light& light,
   const SweepPlan& plan, bool first);
+
+/**
+ * Gathers the arriving light of all lights (the direct one swept last, by @p plan)
+ * through the materials' scatterer templates into pass.Textures.Light:
+ *   R(p) = sum_j w_j c_j A(p + r_j) / sum_j w_j                     (single scattering)
+ * Linear in each light's T_l with weights that do not depend on the light, so one
+ * gather serves every light.
+ */
+void GatherLight(const TransportPass& pass, const SweepPlan& plan);
 }
 
 #endif

@@ -1,6 +1,7 @@
 #include "ScattererTransportPrograms.h"
 
 #include "ScattererTransportGrid.h"
+#include "ScattererTransportLightPasses.h"
 
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
@@ -12,6 +13,8 @@
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 
+#include "scatterer_transport_arrive.h"
+#include "scatterer_transport_arriving.h"
 #include "scatterer_transport_coarsen.h"
 #include "scatterer_transport_combine.h"
 #include "scatterer_transport_common.h"
@@ -21,20 +24,27 @@
 
 #include <algorithm>
 #include <initializer_list>
+#include <utility>
 
 namespace scatterer_gpu
 {
 namespace
 {
-// The common declarations, after the variant's defines, go where the pass has its tag.
+// The common declarations, after the variant's defines, and the arriving light's
+// functions go where the pass has their tags.
 std::string WithCommon(const char* pass, const std::string& variant)
 {
   std::string text = pass;
-  const std::string tag = "//VTK::Transport::Common";
-  const auto at = text.find(tag);
-  if (at != std::string::npos)
+  const std::pair<std::string, std::string> chunks[] = { { "//VTK::Transport::Common",
+                                                           variant + scatterer_transport_common },
+    { "//VTK::Transport::Arriving", scatterer_transport_arriving } };
+  for (const auto& chunk : chunks)
   {
-    text.replace(at, tag.size(), variant + scatterer_transport_common);
+    const auto at = text.find(chunk.first);
+    if (at != std::string::npos)
+    {
+      text.replace(at, chunk.first.size(), chunk.second);
+    }
   }
   return text;
 }
@@ -42,9 +52,13 @@ std::string WithCommon(const char* pass, const std::string& variant)
 
 std::string TransportPrograms::Variant(const vtkScattererTransportVolume::Inputs& in)
 {
+  // Which arriving light the passes read (scatterer_transport_arriving.glsl).
+  const bool direct = DirectLight(in) >= 0;
   return "#define ST_COMPONENT_MODE " + std::to_string(in.ComponentMode) +
     "\n#define ST_MATERIAL_COMPONENT " + std::to_string(in.MaterialComponent) +
-    "\n#define ST_PARTS " + std::to_string(std::max<size_t>(1, in.Parts.size())) + "\n";
+    "\n#define ST_PARTS " + std::to_string(std::max<size_t>(1, in.Parts.size())) +
+    "\n#define ST_DIRECT_LIGHT " + std::to_string(direct ? 1 : 0) + "\n#define ST_ARRIVING " +
+    std::to_string(in.Lights.size() > (direct ? 1u : 0u) ? 1 : 0) + "\n";
 }
 
 TransportPrograms::TransportPrograms() = default;
@@ -62,17 +76,19 @@ bool TransportPrograms::Create(
       new vtkOpenGLQuadHelper(window, vs.c_str(), fs.c_str(), ""));
   };
   this->Sweep = quad(WithCommon(scatterer_transport_sweep, variant));
+  this->Arrive = quad(WithCommon(scatterer_transport_arrive, variant));
   this->Gather = quad(WithCommon(scatterer_transport_gather, variant));
   this->Coarsen = quad(WithCommon(scatterer_transport_coarsen, variant));
   this->Diffuse = quad(scatterer_transport_diffuse);
   this->Combine = quad(scatterer_transport_combine);
-  for (auto* q : { &this->Sweep, &this->Gather, &this->Coarsen, &this->Diffuse, &this->Combine })
+  for (auto* q :
+    { &this->Sweep, &this->Arrive, &this->Gather, &this->Coarsen, &this->Diffuse, &this->Combine })
   {
     if (!(*q)->Program)
     {
       why = "the transport shaders failed to compile on this OpenGL implementation";
-      for (auto* p :
-        { &this->Sweep, &this->Gather, &this->Coarsen, &this->Diffuse, &this->Combine })
+      for (auto* p : { &this->Sweep, &this->Arrive, &this->Gather, &this->Coarsen, &this->Diffuse,
+             &this->Combine })
       {
         p->reset();
       }
@@ -84,7 +100,8 @@ bool TransportPrograms::Create(
 
 void TransportPrograms::ReleaseGraphicsResources(vtkWindow* window)
 {
-  for (auto* q : { &this->Sweep, &this->Gather, &this->Coarsen, &this->Diffuse, &this->Combine })
+  for (auto* q :
+    { &this->Sweep, &this->Arrive, &this->Gather, &this->Coarsen, &this->Diffuse, &this->Combine })
   {
     if (*q)
     {

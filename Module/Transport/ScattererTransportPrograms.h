@@ -21,11 +21,12 @@ namespace scatterer_gpu
 struct SweepPlan;
 struct TransportGrid;
 
-/** The five pass programs, compiled together once per context and component rule. */
+/** The six pass programs, compiled together once per context and component rule. */
 struct TransportPrograms
 {
   std::unique_ptr<vtkOpenGLQuadHelper> Sweep;   ///< pass 1: transmittance, slice by slice
-  std::unique_ptr<vtkOpenGLQuadHelper> Gather;  ///< pass 2: template in-scattering
+  std::unique_ptr<vtkOpenGLQuadHelper> Arrive;  ///< pass 2a: a light's arriving light
+  std::unique_ptr<vtkOpenGLQuadHelper> Gather;  ///< pass 2b: template in-scattering
   std::unique_ptr<vtkOpenGLQuadHelper> Coarsen; ///< pass 3a: medium and source, coarse grid
   std::unique_ptr<vtkOpenGLQuadHelper> Diffuse; ///< pass 3: one Jacobi iteration
   std::unique_ptr<vtkOpenGLQuadHelper> Combine; ///< pass 4: coarse light added to the fine

@@ -9,7 +9,8 @@ namespace scatterer_gpu
 void TransportProgress::BeginBuild(int lights, int iterations)
 {
   this->Done = 0;
-  this->Total = lights * (kSweepSteps + 1) + 2 + iterations; // + coarsening, combine
+  // + the gather, the coarsening, the combine
+  this->Total = lights * (kSweepSteps + 1) + 3 + iterations;
   this->Building = true;
 }
 

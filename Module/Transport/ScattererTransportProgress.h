@@ -1,6 +1,6 @@
 // The progress of a light transport build, reported as the fraction of its stages the
-// GPU has done: per light its sweep (kSweepSteps reports) and its gather, then the
-// coarsening, each diffusion iteration and the final combine.
+// GPU has done: per light its sweep (kSweepSteps reports) and the light it brings, then
+// the gather, the coarsening, each diffusion iteration and the final combine.
 #ifndef ScattererTransportProgress_h
 #define ScattererTransportProgress_h
 

@@ -82,13 +82,13 @@ bool TransportTextures::AllocateFine(
   {
     return true;
   }
-  for (auto* texture : { &this->Light, &this->Source })
+  // Arriving: one texel more on each side (scatterer_transport_arrive.glsl).
+  const int padded[3] = { dims[0] + 2, dims[1] + 2, dims[2] + 2 };
+  if (!AllocateRGBA16F(window, this->Light, dims) ||
+    !AllocateRGBA16F(window, this->Arriving, padded))
   {
-    if (!AllocateRGBA16F(window, *texture, dims))
-    {
-      why = "the light texture could not be allocated";
-      return false;
-    }
+    why = "the light texture could not be allocated";
+    return false;
   }
   return true;
 }
@@ -146,7 +146,7 @@ size_t TransportTextures::GetGPUBytes() const
 {
   constexpr size_t rgba16f = 8, r16f = 2;
   return rgba16f *
-    (Texels(this->Light) + Texels(this->Source) + Texels(this->Fluence[0]) +
+    (Texels(this->Light) + Texels(this->Arriving) + Texels(this->Fluence[0]) +
       Texels(this->Fluence[1]) + Texels(this->CoarseMedium) + Texels(this->CoarseSource)) +
     r16f * (Texels(this->Transmittance) + Texels(this->Slices[0]) + Texels(this->Slices[1]));
 }
@@ -154,7 +154,7 @@ size_t TransportTextures::GetGPUBytes() const
 void TransportTextures::ReleaseGraphicsResources(vtkWindow* window)
 {
   for (auto* t :
-    { &this->Light, &this->Source, &this->Transmittance, &this->Slices[0], &this->Slices[1],
+    { &this->Light, &this->Arriving, &this->Transmittance, &this->Slices[0], &this->Slices[1],
       &this->Fluence[0], &this->Fluence[1], &this->CoarseMedium, &this->CoarseSource })
   {
     if (*t)

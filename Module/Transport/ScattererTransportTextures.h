@@ -27,8 +27,9 @@ std::vector<float> DownloadTexture3D(vtkTextureObject* texture, int components);
 /** The render targets of the transport passes. */
 struct TransportTextures
 {
-  vtkSmartPointer<vtkTextureObject> Light;         ///< RGBA16F, fine grid: the light received
-  vtkSmartPointer<vtkTextureObject> Source;        ///< RGBA16F, fine grid: light scattered once
+  vtkSmartPointer<vtkTextureObject> Light; ///< RGBA16F, fine grid: the light received
+  vtkSmartPointer<vtkTextureObject>
+    Arriving; ///< RGBA16F, fine grid + 1 texel a side: light arriving unscattered
   vtkSmartPointer<vtkTextureObject> Transmittance; ///< R16F, sweep order
   vtkSmartPointer<vtkTextureObject> Slices[2];     ///< R16F, ping-pong of the sweep
   vtkSmartPointer<vtkTextureObject> Fluence[2];    ///< RGBA16F, coarse grid: diffusion ping-pong
@@ -36,7 +37,7 @@ struct TransportTextures
   vtkSmartPointer<vtkTextureObject>
     CoarseSource; ///< RGBA16F, coarse grid: light scattered once, occlusion
 
-  /** Light and Source on the fine grid of @p dims; false with @p why set if refused. */
+  /** Light and Arriving on the fine grid of @p dims; false with @p why set if refused. */
   bool AllocateFine(vtkOpenGLRenderWindow* window, const int dims[3], std::string& why);
 
   /** Transmittance of @p sweepDims (rows, columns, slices) and the slices; false with

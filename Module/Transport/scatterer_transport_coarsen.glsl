@@ -6,8 +6,10 @@
 // of st_block^3 fine texels (st_block: 4 or 2, so that a coarse texel spans about
 // 4 volume voxels, or 2 fine texels at TransportScale 3 and above): its medium
 // (albedo, sigma_t) is the mean of theirs (st_mediumAt at each), its source the mean
-// of theirs (linear fetches at the centres of 2x2x2 sub-blocks). Never one point
-// sample: see ScattererTransportGrid.cxx, CoarseGrid::Over.
+// of theirs, the light scattered once at each fine texel q:
+//   S(q) = sigma_t(q) albedo(q) A(q)
+// with A the light arriving unscattered (scatterer_transport_arriving.glsl). Never one
+// point sample: see ScattererTransportGrid.cxx, CoarseGrid::Over.
 //
 // Its alpha also carries the ambient occlusion of the block centre p: VTK's ambient
 // light comes from every direction, so it is occluded by the medium around p.
@@ -20,8 +22,8 @@
 // so free space gets 1, a flat surface at least 1/3 and a point deep inside 0.
 //============================================================================
 //VTK::Transport::Common
+//VTK::Transport::Arriving
 in vec2 texCoord;
-uniform sampler3D st_source;       // fine grid: rgb = the light scattered once
 uniform float st_layer;
 uniform vec3 st_coarseDims;
 uniform vec3 st_coarseToGrid;      // coarse texel c covers fine positions c * st_block + st_coarseToGrid + [0, st_block)
@@ -35,20 +37,18 @@ void main()
   float b = float(st_block);
   vec3 fine = c * b + st_coarseToGrid;
   vec4 medium = vec4(0.0);
+  vec3 source = vec3(0.0);
+  ivec3 last = ivec3(st_gridDims) - ivec3(1);
   for (int k = 0; k < st_block * st_block * st_block; ++k)
   {
     vec3 o = vec3(float(k % st_block), float((k / st_block) % st_block), float(k / (st_block * st_block)));
-    medium += st_mediumAt(st_gridToTexture(fine + o));
+    vec4 m = st_mediumAt(st_gridToTexture(fine + o));
+    medium += m;
+    // Outside the grid the medium is empty: the clamped texel adds nothing.
+    source += m.a * m.rgb * st_arrivingAtTexel(clamp(ivec3(fine + o), ivec3(0), last));
   }
   medium /= b * b * b;
-  vec3 source = vec3(0.0);
-  int halves = st_block / 2;
-  for (int k = 0; k < halves * halves * halves; ++k)
-  {
-    vec3 o = 2.0 * vec3(float(k % halves), float((k / halves) % halves), float(k / (halves * halves)));
-    source += texture(st_source, (fine + o + vec3(1.0)) / st_gridDims).rgb;
-  }
-  source /= float(halves * halves * halves);
+  source /= b * b * b;
   vec3 centre = fine + vec3(0.5 * (b - 1.0));
   float open = 0.0;
   for (int a = 0; a < 3; ++a)

@@ -73,26 +73,50 @@ struct vtkScattererTransportVolume::vtkInternals
   void Release(vtkWindow* window);
 };
 
-// The passes of one build: per light its sweep and gather, then the diffusion.
+// The passes of one build: per light its sweep and the light it brings (the direct
+// light last, read by the gather from its transmittance), then the template gather of
+// them all, then the diffusion.
 bool vtkScattererTransportVolume::vtkInternals::RunPasses(const Inputs& in, std::string& why)
 {
   scatterer_gpu::TransportPassState state(this->Context, this->Framebuffer);
   const scatterer_gpu::TransportPass pass = this->Pass(in);
   const int lights = static_cast<int>(in.Lights.size());
   this->Progress.BeginBuild(lights, scatterer_gpu::DiffusionIterations(in));
+  const int direct = scatterer_gpu::DirectLight(in);
   bool ok = true;
-  for (int l = 0; l < lights && ok; ++l)
+  int swept = 0;
+  const auto sweep = [&](int l)
   {
     this->Context->GetState()->vtkglDisable(GL_BLEND);
-    ok = this->Sweep(in, in.Lights[l], why);
+    ok = this->Sweep(in, in.Lights[static_cast<size_t>(l)], why);
     if (ok)
     {
-      this->Progress.SweepDone(l);
-      scatterer_gpu::GatherLight(pass, in.Lights[l], this->CurrentPlan, l == 0);
+      this->Progress.SweepDone(swept);
+      if (l != direct)
+      {
+        scatterer_gpu::AddArrivingLight(
+          pass, in.Lights[static_cast<size_t>(l)], this->CurrentPlan, swept == 0);
+      }
       this->Progress.StepDone();
+      ++swept;
+    }
+  };
+  for (int l = 0; l < lights && ok; ++l)
+  {
+    if (l != direct)
+    {
+      sweep(l);
     }
   }
-  ok = ok && scatterer_gpu::AddScatteredAndAmbientLight(pass, why);
+  if (ok && direct >= 0)
+  {
+    sweep(direct);
+  }
+  if (ok)
+  {
+    scatterer_gpu::GatherLight(pass, this->CurrentPlan);
+  }
+  ok = ok && scatterer_gpu::AddScatteredAndAmbientLight(pass, this->CurrentPlan, why);
   if (ok)
   {
     this->Progress.BuildDone();

@@ -5,10 +5,10 @@
  *
  * For every light, a transmittance volume T_l (the fraction of the light's energy
  * that reaches each point through the whole volume) is swept slice by slice along
- * the light's dominant axis (Beer-Lambert, O(N) per light); a second pass gathers
- * it through each material's scatterer templates (single scattering, colour
- * bleeding, Snell rescaling) into one RGB texture: the light each point receives,
- * summed over the lights. The light scattered once is then spread by a diffusion
+ * the light's dominant axis (Beer-Lambert, O(N) per light). The light all of them
+ * bring, sum_l E_l a_l T_l, is gathered once through each material's scatterer
+ * templates (single scattering, colour bleeding, Snell rescaling) into one RGB
+ * texture: the light each point receives. The light scattered once is then spread by a diffusion
  * solve on a coarser grid (multiple scattering) and added. The ray caster reads
  * that texture once per sample. The equations are in
  * scatterer_transport_*.glsl beside it and docs/model.md.
@@ -221,11 +221,12 @@ public:
 
   /**
    * Called during a rebuild with the fraction of its passes done, (0, 1]: after each
-   * quarter of each light's sweep, each gather, the coarsening, each diffusion
-   * iteration and the final combine. The passes run on the GPU asynchronously, so with
-   * a callback set the build waits for each stage (glFinish) before reporting it: the
-   * fraction then says what the GPU has done, not what was queued. Unset (the
-   * default), nothing waits. The mapper forwards it as its ProgressEvent.
+   * quarter of each light's sweep, the light each brings, the gather, the coarsening,
+   * each diffusion iteration and the final combine. The passes run on the GPU
+   * asynchronously, so with a callback set the build waits for each stage (glFinish)
+   * before reporting it: the fraction then says what the GPU has done, not what was
+   * queued. Unset (the default), nothing waits. The mapper forwards it as its
+   * ProgressEvent.
    */
   void SetProgressCallback(std::function<void(double)> callback);
 

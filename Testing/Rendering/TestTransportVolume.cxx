@@ -31,6 +31,7 @@
 #include <cstdio>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -532,4 +533,106 @@ TEST(TransportVolume, GreyColourFunctionIsLitWithTheColoursTheRayCasterShows)
     "received light, grey vs VTK's ramp: %g; vs the grey as RGB: %g\n", vsRamp, vsGreyAsRgb);
   EXPECT_LT(vsRamp, 1e-4f) << "the light is not coloured as the ray caster colours";
   EXPECT_GT(vsGreyAsRgb, 1e-2f) << "the albedo does not reach the light: the test sees nothing";
+}
+
+TEST(TransportVolume, LightsAddUpWhateverTheirOrder)
+{
+  // Every term of the light is linear in each light's transmittance with weights that do
+  // not depend on the light, so the lights add up: the build sums the light each one
+  // but the last brings (scatterer_transport_arrive.glsl) and reads the last one's from
+  // its transmittance. Three lights give the sum of each alone, in any order: a spot
+  // light's cone and attenuation count the same first or last.
+  const int n = 24;
+  auto image = MakeVolume(n, 1.0, Slab(6, 17));
+  const double c = 0.5 * (n - 1);
+  const auto directional = [c](double x, double y, double z, double r, double g, double b)
+  {
+    auto light = vtkSmartPointer<vtkLight>::New();
+    light->SetLightTypeToSceneLight();
+    light->SetFocalPoint(c, c, c);
+    light->SetPosition(c + x, c + y, c + z);
+    light->SetColor(r, g, b);
+    return light;
+  };
+  auto spot = vtkSmartPointer<vtkLight>::New();
+  spot->SetLightTypeToSceneLight();
+  spot->SetPositional(true);
+  spot->SetPosition(c + 4, c, 40.0);
+  spot->SetFocalPoint(c + 4, c, 0.0);
+  spot->SetConeAngle(25.0);
+  spot->SetAttenuationValues(1.0, 0.02, 0.0);
+  spot->SetColor(0.3, 0.9, 0.4);
+  const std::vector<vtkSmartPointer<vtkLight>> lights = { directional(0, 0, 1, 1.0, 0.6, 0.3), spot,
+    directional(1, 0.5, 1, 0.2, 0.4, 1.0) };
+  const auto lightWith = [&image](const std::vector<vtkLight*>& on)
+  {
+    TransportScene scene(image, 0.3);
+    scene.Renderer->RemoveAllLights();
+    for (vtkLight* light : on)
+    {
+      scene.Renderer->AddLight(light);
+    }
+    return scene.ReceivedLight();
+  };
+  const auto first = lightWith({ lights[0] }), second = lightWith({ lights[1] }),
+             third = lightWith({ lights[2] });
+  const auto all = lightWith({ lights[0], lights[1], lights[2] });
+  const auto reordered = lightWith({ lights[1], lights[2], lights[0] });
+  ASSERT_FALSE(all.empty());
+  for (const auto* alone : { &first, &second, &third, &reordered })
+  {
+    ASSERT_EQ(alone->size(), all.size());
+  }
+  float largest = 0.0f, vsSum = 0.0f, vsReordered = 0.0f, spotShare = 0.0f;
+  for (size_t i = 0; i < all.size(); ++i)
+  {
+    largest = std::max(largest, all[i]);
+    vsSum = std::max(vsSum, std::abs(all[i] - (first[i] + second[i] + third[i])));
+    vsReordered = std::max(vsReordered, std::abs(all[i] - reordered[i]));
+    spotShare = std::max(spotShare, second[i]);
+  }
+  std::printf("largest %g; three lights vs the sum of each alone: %g; vs reordered: %g\n", largest,
+    vsSum, vsReordered);
+  ASSERT_GT(spotShare, 0.05f * largest) << "the spot light adds nothing: the test sees little";
+  // Half-float textures: about 1e-3 of the value each.
+  EXPECT_LT(vsSum, 4e-3f * largest) << "the lights do not add up";
+  EXPECT_LT(vsReordered, 4e-3f * largest) << "the order of the lights changes the light";
+}
+
+TEST(TransportVolume, PhotonsPastTheGridSeeTheLightUnattenuated)
+{
+  // Past the grid there is no matter: a photon there reads T = 1 (the transmittance's
+  // border), also through the sum of the lights' arriving light (pass 2a), whose texture
+  // has a texel more on each side for it. A slab lit from above, filling the grid
+  // across: its texels at the grid's side receive more than those in its middle, whose
+  // photons all lie in the slab (single scattering alone: the diffusion lets light
+  // escape past the grid, which darkens the side). A second light the same, summed by
+  // pass 2a while the first is read from its transmittance, doubles the light there too.
+  const int n = 24;
+  auto image = MakeVolume(n, 1.0, Slab(6, 17));
+  const auto lightWith = [&image](int lights)
+  {
+    TransportScene scene(image, 0.3);
+    scene.Mapper->SetMultipleScattering(0.0);
+    scene.SetDirectional(0, 0, 1);
+    for (int l = 1; l < lights; ++l)
+    {
+      vtkNew<vtkLight> twin;
+      twin->DeepCopy(scene.Light);
+      scene.Renderer->AddLight(twin);
+    }
+    return scene.ReceivedLight();
+  };
+  const auto one = lightWith(1), two = lightWith(2);
+  ASSERT_EQ(one.size(), static_cast<size_t>(3 * n * n * n));
+  ASSERT_EQ(two.size(), one.size());
+  const auto at = [n](const std::vector<float>& light, int i, int j, int k)
+  { return light[3 * (i + n * (j + n * k))]; };
+  const float edge = at(one, 0, 12, 10), middle = at(one, 12, 12, 10);
+  std::printf("received 7 voxels into the slab: at the grid's side %g, in the middle %g; "
+              "two lights at the side %g\n",
+    edge, middle, at(two, 0, 12, 10));
+  EXPECT_GT(edge, middle * 1.05f) << "photons past the grid read the edge's shadow";
+  EXPECT_NEAR(at(two, 0, 12, 10), 2.0f * edge, 0.01f * edge)
+    << "the lights summed by pass 2a read the edge's shadow past the grid";
 }
