@@ -132,9 +132,12 @@ int DirectLight(const vtkScattererTransportVolume::Inputs& in)
 
 ScopedArrivingLight::ScopedArrivingLight(
   vtkShaderProgram* program, const TransportPass& pass, const SweepPlan& plan)
-  : Arriving(program, "st_arriving", pass.Textures.Arriving)
-  , Transmittance(program, "st_transmittance", pass.Textures.Transmittance)
+  : Transmittance(program, "st_transmittance", pass.Textures.Transmittance)
 {
+  if (pass.Textures.Arriving)
+  {
+    this->Arriving.reset(new ScopedSampler(program, "st_arriving", pass.Textures.Arriving));
+  }
   const int direct = DirectLight(pass.In);
   if (direct >= 0)
   {

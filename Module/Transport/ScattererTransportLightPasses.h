@@ -11,6 +11,7 @@
 #include "ScattererTransportPrograms.h"  // for ScopedSampler
 #include "vtkScattererTransportVolume.h" // for Light
 
+#include <memory> // for std::unique_ptr
 #include <string>
 
 class vtkShaderProgram;
@@ -33,7 +34,8 @@ public:
   ScopedArrivingLight(vtkShaderProgram* program, const TransportPass& pass, const SweepPlan& plan);
 
 private:
-  ScopedSampler Arriving, Transmittance;
+  std::unique_ptr<ScopedSampler> Arriving; ///< none without lights of pass 2a
+  ScopedSampler Transmittance;
 };
 
 /**

@@ -82,15 +82,38 @@ bool TransportTextures::AllocateFine(
   {
     return true;
   }
-  // Arriving: one texel more on each side (scatterer_transport_arrive.glsl).
-  const int padded[3] = { dims[0] + 2, dims[1] + 2, dims[2] + 2 };
-  if (!AllocateRGBA16F(window, this->Light, dims) ||
-    !AllocateRGBA16F(window, this->Arriving, padded))
+  if (!AllocateRGBA16F(window, this->Light, dims))
   {
     why = "the light texture could not be allocated";
     return false;
   }
   return true;
+}
+
+bool TransportTextures::AllocateArriving(
+  vtkOpenGLRenderWindow* window, const int dims[3], std::string& why)
+{
+  // One texel more on each side (scatterer_transport_arrive.glsl).
+  const int padded[3] = { dims[0] + 2, dims[1] + 2, dims[2] + 2 };
+  if (HasSize(this->Arriving, padded[0], padded[1], padded[2]))
+  {
+    return true;
+  }
+  if (!AllocateRGBA16F(window, this->Arriving, padded))
+  {
+    why = "the arriving-light texture could not be allocated";
+    return false;
+  }
+  return true;
+}
+
+void TransportTextures::ReleaseArriving(vtkWindow* window)
+{
+  if (this->Arriving)
+  {
+    this->Arriving->ReleaseGraphicsResources(window);
+    this->Arriving = nullptr;
+  }
 }
 
 bool TransportTextures::AllocateSweep(

@@ -28,8 +28,8 @@ std::vector<float> DownloadTexture3D(vtkTextureObject* texture, int components);
 struct TransportTextures
 {
   vtkSmartPointer<vtkTextureObject> Light; ///< RGBA16F, fine grid: the light received
-  vtkSmartPointer<vtkTextureObject>
-    Arriving; ///< RGBA16F, fine grid + 1 texel a side: light arriving unscattered
+  /// RGBA16F, fine grid + 1 texel a side: light arriving unscattered (null when unused)
+  vtkSmartPointer<vtkTextureObject> Arriving;
   vtkSmartPointer<vtkTextureObject> Transmittance; ///< R16F, sweep order
   vtkSmartPointer<vtkTextureObject> Slices[2];     ///< R16F, ping-pong of the sweep
   vtkSmartPointer<vtkTextureObject> Fluence[2];    ///< RGBA16F, coarse grid: diffusion ping-pong
@@ -37,8 +37,15 @@ struct TransportTextures
   vtkSmartPointer<vtkTextureObject>
     CoarseSource; ///< RGBA16F, coarse grid: light scattered once, occlusion
 
-  /** Light and Arriving on the fine grid of @p dims; false with @p why set if refused. */
+  /** Light on the fine grid of @p dims; false with @p why set if refused. */
   bool AllocateFine(vtkOpenGLRenderWindow* window, const int dims[3], std::string& why);
+
+  /** Arriving for the fine grid of @p dims (one texel more a side), needed by builds
+   * whose lights are more than one directional light; false with @p why set if refused. */
+  bool AllocateArriving(vtkOpenGLRenderWindow* window, const int dims[3], std::string& why);
+
+  /** Frees Arriving (a build of one directional light does without it). */
+  void ReleaseArriving(vtkWindow* window);
 
   /** Transmittance of @p sweepDims (rows, columns, slices) and the slices; false with
    * @p why set if refused. */

@@ -83,7 +83,16 @@ bool vtkScattererTransportVolume::vtkInternals::RunPasses(const Inputs& in, std:
   const int lights = static_cast<int>(in.Lights.size());
   this->Progress.BeginBuild(lights, scatterer_gpu::DiffusionIterations(in));
   const int direct = scatterer_gpu::DirectLight(in);
+  // The lights of pass 2a need their texture; one directional light alone does not.
   bool ok = true;
+  if (lights > (direct >= 0 ? 1 : 0))
+  {
+    ok = this->Textures.AllocateArriving(this->Context, this->Grid.Dims, why);
+  }
+  else
+  {
+    this->Textures.ReleaseArriving(this->Context);
+  }
   int swept = 0;
   const auto sweep = [&](int l)
   {

@@ -118,6 +118,8 @@ struct TransportScene
     return t;
   }
 
+  size_t GPUBytes = 0; ///< the transport volume's, at the last ReceivedLight()
+
   // Renders once in the shared window and reads the received light back (RGB, grid order).
   std::vector<float> ReceivedLight()
   {
@@ -126,6 +128,7 @@ struct TransportScene
     window->Render();
     auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window);
     std::vector<float> light = this->Mapper->GetTransportVolume()->ReadLight(gl);
+    this->GPUBytes = this->Mapper->GetTransportVolume()->GetGPUBytes();
     window->RemoveRenderer(this->Renderer);
     return light;
   }
@@ -607,10 +610,12 @@ TEST(TransportVolume, PhotonsPastTheGridSeeTheLightUnattenuated)
   // across: its texels at the grid's side receive more than those in its middle, whose
   // photons all lie in the slab (single scattering alone: the diffusion lets light
   // escape past the grid, which darkens the side). A second light the same, summed by
-  // pass 2a while the first is read from its transmittance, doubles the light there too.
+  // pass 2a while the first is read from its transmittance, doubles the light there too;
+  // only then is the texture of pass 2a held (one directional light does without it).
   const int n = 24;
   auto image = MakeVolume(n, 1.0, Slab(6, 17));
-  const auto lightWith = [&image](int lights)
+  size_t gpuBytes[3] = { 0, 0, 0 };
+  const auto lightWith = [&image, &gpuBytes](int lights)
   {
     TransportScene scene(image, 0.3);
     scene.Mapper->SetMultipleScattering(0.0);
@@ -621,9 +626,14 @@ TEST(TransportVolume, PhotonsPastTheGridSeeTheLightUnattenuated)
       twin->DeepCopy(scene.Light);
       scene.Renderer->AddLight(twin);
     }
-    return scene.ReceivedLight();
+    auto light = scene.ReceivedLight();
+    gpuBytes[lights] = scene.GPUBytes;
+    return light;
   };
   const auto one = lightWith(1), two = lightWith(2);
+  const size_t arrivingBytes = 8 * static_cast<size_t>(n + 2) * (n + 2) * (n + 2); // RGBA16F
+  EXPECT_EQ(gpuBytes[2], gpuBytes[1] + arrivingBytes)
+    << "one directional light holds the texture of pass 2a, or two do not";
   ASSERT_EQ(one.size(), static_cast<size_t>(3 * n * n * n));
   ASSERT_EQ(two.size(), one.size());
   const auto at = [n](const std::vector<float>& light, int i, int j, int k)
