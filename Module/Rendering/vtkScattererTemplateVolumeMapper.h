@@ -11,7 +11,7 @@
  * Default (IlluminationMode Transport): a light transport volume is built on the
  * GPU from the ray caster's own volume texture whenever the data, transfer
  * function, lights or settings change (vtkScattererTransportVolume: a
- * Beer-Lambert sweep per light, then a template gather), and every ray sample
+ * Beer-Lambert sweep per light, then one template gather of them all), and every ray sample
  * reads it once. PerSample: the paper's local photon test in the shader at every
  * ray sample (occluders within the template radius only).
  *
@@ -47,11 +47,10 @@
  * Progress (vtkCommand::ProgressEvent): a frame that rebuilds the illumination
  * reports 0 when the templates are regenerated, 0.1 when they are done, then the
  * light transport volume's GPU stages up to 0.95 (a quarter of each light's sweep,
- * its gather, the coarsening, each diffusion iteration, the combine; only while an
- * observer is present, because each report waits for the GPU), and 1 after the
- * image, with the progress text "Scatterer illumination" (the mapper's executive
- * also reports 0 and 1, untitled, when its pipeline runs). Frames that rebuild
- * nothing report nothing.
+ * the light it brings, the gather, the coarsening, each diffusion iteration, the combine; only
+ * while an observer is present, because each report waits for the GPU), and 1 after the image, with
+ * the progress text "Scatterer illumination" (the mapper's executive also reports 0 and 1,
+ * untitled, when its pipeline runs). Frames that rebuild nothing report nothing.
  *
  * @sa vtkOpenGLGPUVolumeRayCastMapper
  */

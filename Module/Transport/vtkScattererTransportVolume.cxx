@@ -6,7 +6,7 @@
 //   ScattererTransportPrograms         the pass programs and the uniforms they share
 //   ScattererTransportTables           the medium and material tables, uploaded per build
 //   ScattererTransportTextures         the render targets and their allocation
-//   ScattererTransportLightPasses      per light: transmittance sweep, template gather
+//   ScattererTransportLightPasses      per light its sweep and arriving light; one gather
 //   ScattererTransportDiffusionPasses  multiple scattering and ambient light
 //   ScattererTransportFramebuffer      the GL state and layered draws of every pass
 //   ScattererTransportProgress         the fraction of the build done (ProgressEvent)
