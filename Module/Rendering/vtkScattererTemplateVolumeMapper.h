@@ -11,9 +11,9 @@
  * Default (IlluminationMode Transport): a light transport volume is built on the
  * GPU from the ray caster's own volume texture whenever the data, transfer
  * function, lights or settings change (vtkScattererTransportVolume: a
- * Beer-Lambert sweep per light, then one template gather of them all), and every ray sample
- * reads it once. PerSample: the paper's local photon test in the shader at every
- * ray sample (occluders within the template radius only).
+ * Beer-Lambert sweep per light, then one template gather of them all), and every
+ * ray sample reads it once. PerSample: the paper's local photon test in the shader
+ * at every ray sample (occluders within the template radius only).
  *
  * The work is injected into the stock ray caster as GLSL replacements on the
  * volume's shader property (Module/Shaders), so blend modes, cropping,
@@ -47,10 +47,11 @@
  * Progress (vtkCommand::ProgressEvent): a frame that rebuilds the illumination
  * reports 0 when the templates are regenerated, 0.1 when they are done, then the
  * light transport volume's GPU stages up to 0.95 (a quarter of each light's sweep,
- * the light it brings, the gather, the coarsening, each diffusion iteration, the combine; only
- * while an observer is present, because each report waits for the GPU), and 1 after the image, with
- * the progress text "Scatterer illumination" (the mapper's executive also reports 0 and 1,
- * untitled, when its pipeline runs). Frames that rebuild nothing report nothing.
+ * the light it brings, the gather, the coarsening, each diffusion iteration, the
+ * combine; only while an observer is present, because each report waits for the
+ * GPU), and 1 after the image, with the progress text "Scatterer illumination" (the
+ * mapper's executive also reports 0 and 1, untitled, when its pipeline runs). Frames
+ * that rebuild nothing report nothing.
  *
  * @sa vtkOpenGLGPUVolumeRayCastMapper
  */

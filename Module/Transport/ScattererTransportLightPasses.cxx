@@ -130,6 +130,11 @@ int DirectLight(const vtkScattererTransportVolume::Inputs& in)
   return -1;
 }
 
+bool HasArrivingLights(const vtkScattererTransportVolume::Inputs& in)
+{
+  return in.Lights.size() > (DirectLight(in) >= 0 ? 1u : 0u);
+}
+
 ScopedArrivingLight::ScopedArrivingLight(
   vtkShaderProgram* program, const TransportPass& pass, const SweepPlan& plan)
   : Transmittance(program, "st_transmittance", pass.Textures.Transmittance)

@@ -24,6 +24,9 @@ struct TransportPass;
 /** The direct light of @p in: its last directional light, or -1 when it has none. */
 int DirectLight(const vtkScattererTransportVolume::Inputs& in);
 
+/** Whether some light of @p in is not the direct light (it passes through pass 2a). */
+bool HasArrivingLights(const vtkScattererTransportVolume::Inputs& in);
+
 /**
  * Binds what scatterer_transport_arriving.glsl reads in @p program for this object's
  * lifetime: the lights of pass 2a, and the direct light (swept last, by @p plan).

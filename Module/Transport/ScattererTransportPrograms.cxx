@@ -53,12 +53,11 @@ std::string WithCommon(const char* pass, const std::string& variant)
 std::string TransportPrograms::Variant(const vtkScattererTransportVolume::Inputs& in)
 {
   // Which arriving light the passes read (scatterer_transport_arriving.glsl).
-  const bool direct = DirectLight(in) >= 0;
   return "#define ST_COMPONENT_MODE " + std::to_string(in.ComponentMode) +
     "\n#define ST_MATERIAL_COMPONENT " + std::to_string(in.MaterialComponent) +
     "\n#define ST_PARTS " + std::to_string(std::max<size_t>(1, in.Parts.size())) +
-    "\n#define ST_DIRECT_LIGHT " + std::to_string(direct ? 1 : 0) + "\n#define ST_ARRIVING " +
-    std::to_string(in.Lights.size() > (direct ? 1u : 0u) ? 1 : 0) + "\n";
+    "\n#define ST_DIRECT_LIGHT " + std::to_string(DirectLight(in) >= 0 ? 1 : 0) +
+    "\n#define ST_ARRIVING " + std::to_string(HasArrivingLights(in) ? 1 : 0) + "\n";
 }
 
 TransportPrograms::TransportPrograms() = default;

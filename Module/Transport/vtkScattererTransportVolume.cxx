@@ -85,7 +85,7 @@ bool vtkScattererTransportVolume::vtkInternals::RunPasses(const Inputs& in, std:
   const int direct = scatterer_gpu::DirectLight(in);
   // The lights of pass 2a need their texture; one directional light alone does not.
   bool ok = true;
-  if (lights > (direct >= 0 ? 1 : 0))
+  if (scatterer_gpu::HasArrivingLights(in))
   {
     ok = this->Textures.AllocateArriving(this->Context, this->Grid.Dims, why);
   }

@@ -106,31 +106,35 @@ struct TransportScene
     this->Light->SetPosition(c + x, c + y, c + z);
   }
 
-  // Renders once in the shared window and reads the transmittance back (grid order).
-  std::vector<float> Transmittance()
+  size_t GPUBytes = 0; ///< the transport volume's, at the last render
+
+  // Renders once in the shared window and returns what @p read reads back from the
+  // transport volume while the renderer is still in the window.
+  template <typename Read>
+  std::vector<float> RenderAndRead(Read read)
   {
     vtkRenderWindow* window = scatterer_testing::SharedWindow();
     window->AddRenderer(this->Renderer);
     window->Render();
-    auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window);
-    std::vector<float> t = this->Mapper->GetTransportVolume()->ReadTransmittance(gl, 0);
+    vtkScattererTransportVolume* transport = this->Mapper->GetTransportVolume();
+    std::vector<float> values = read(transport, vtkOpenGLRenderWindow::SafeDownCast(window));
+    this->GPUBytes = transport->GetGPUBytes();
     window->RemoveRenderer(this->Renderer);
-    return t;
+    return values;
   }
 
-  size_t GPUBytes = 0; ///< the transport volume's, at the last ReceivedLight()
+  // The transmittance of the first light (grid order).
+  std::vector<float> Transmittance()
+  {
+    return this->RenderAndRead([](vtkScattererTransportVolume* transport, vtkOpenGLRenderWindow* gl)
+      { return transport->ReadTransmittance(gl, 0); });
+  }
 
-  // Renders once in the shared window and reads the received light back (RGB, grid order).
+  // The received light (RGB, grid order).
   std::vector<float> ReceivedLight()
   {
-    vtkRenderWindow* window = scatterer_testing::SharedWindow();
-    window->AddRenderer(this->Renderer);
-    window->Render();
-    auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window);
-    std::vector<float> light = this->Mapper->GetTransportVolume()->ReadLight(gl);
-    this->GPUBytes = this->Mapper->GetTransportVolume()->GetGPUBytes();
-    window->RemoveRenderer(this->Renderer);
-    return light;
+    return this->RenderAndRead([](vtkScattererTransportVolume* transport, vtkOpenGLRenderWindow* gl)
+      { return transport->ReadLight(gl); });
   }
 
   float At(const std::vector<float>& t, int i, int j, int k) const
