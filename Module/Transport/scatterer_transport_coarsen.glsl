@@ -9,7 +9,11 @@
 // of theirs, the light scattered once at each fine texel q:
 //   S(q) = sigma_t(q) albedo(q) A(q)
 // with A the light arriving unscattered (scatterer_transport_arriving.glsl). Never one
-// point sample: see ScattererTransportGrid.cxx, CoarseGrid::Over.
+// point sample: see ScattererTransportGrid.cxx, CoarseGrid::Over. The arriving light's
+// texels hold their mean along each light's line, A(q) cosh(tau_half)
+// (scatterer_transport_sweep.glsl); the source takes the value at q back from it, with
+// tau_half = sigma_t(q) h / 2 for a fine texel of mean size h (exact for a light along
+// an axis; a light across the texel's diagonal crosses up to sqrt(3) h of it).
 //
 // Its alpha also carries the ambient occlusion of the block centre p: VTK's ambient
 // light comes from every direction, so it is occluded by the medium around p.
@@ -39,13 +43,17 @@ void main()
   vec4 medium = vec4(0.0);
   vec3 source = vec3(0.0);
   ivec3 last = ivec3(st_gridDims) - ivec3(1);
+  float fineSize = (st_h.x + st_h.y + st_h.z) / (3.0 * b); // a fine texel's mean size
   for (int k = 0; k < st_block * st_block * st_block; ++k)
   {
     vec3 o = vec3(float(k % st_block), float((k / st_block) % st_block), float(k / (st_block * st_block)));
     vec4 m = st_mediumAt(st_gridToTexture(fine + o));
     medium += m;
     // Outside the grid the medium is empty: the clamped texel adds nothing.
-    source += m.a * m.rgb * st_arrivingAtTexel(clamp(ivec3(fine + o), ivec3(0), last));
+    // A(q) from its texel's mean (the sweep's T_texel = T(q) cosh(tau_half)), with
+    // tau_half over half a fine texel of q's medium.
+    float tauHalf = 0.5 * st_occlusionScale * m.a * fineSize;
+    source += m.a * m.rgb * st_arrivingAtTexel(clamp(ivec3(fine + o), ivec3(0), last)) / cosh(tauHalf);
   }
   medium /= b * b * b;
   source /= b * b * b;

@@ -650,3 +650,26 @@ TEST(TransportVolume, PhotonsPastTheGridSeeTheLightUnattenuated)
   EXPECT_NEAR(at(two, 0, 12, 10), 2.0f * edge, 0.01f * edge)
     << "the lights summed by pass 2a read the edge's shadow past the grid";
 }
+
+TEST(TransportVolume, ThickTexelHoldsTheMeanOfTheLightEnteringAndLeavingIt)
+{
+  // A dense slab (opacity 0.9 per unit: 2.3 mean free paths per texel) lit from above.
+  // The sweep carries T(p) at texel centres; the texture holds each texel's mean along
+  // the line, (T_in + T_out) / 2 = T(p) cosh(tau / 2), for the step's optical depth tau
+  // (scatterer_transport_sweep.glsl). In such a texel the two differ by 1.74x: T(p)
+  // alone is the light half a texel deep, which is what showed the grid on bone.
+  const int n = 32;
+  auto image = MakeVolume(n, 1.0, Slab(8, 23));
+  TransportScene scene(image, 0.9);
+  scene.SetDirectional(0, 0, 1);
+  const auto t = scene.Transmittance();
+  ASSERT_EQ(t.size(), static_cast<size_t>(n * n * n));
+  const double sigma = -std::log(1.0 - 0.9);
+  for (int k : { 22, 21 })
+  {
+    // The sweep's midpoint samples: the steps from k up to voxel 23 lie in the slab.
+    const double centre = std::exp(-sigma * (23.0 - k));
+    const double mean = centre * std::cosh(0.5 * sigma);
+    EXPECT_NEAR(scene.At(t, 16, 16, k), mean, 0.01 * mean) << "k = " << k << ", T(p) = " << centre;
+  }
+}
