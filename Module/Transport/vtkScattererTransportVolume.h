@@ -209,8 +209,9 @@ public:
   size_t GetGPUBytes() const;
 
   /**
-   * For tests: the transmittance of light @p light of the last build, in grid
-   * order (x fastest), rebuilt for that light alone. Empty if none.
+   * For tests: the transmittance of light @p light of the last build (each texel's
+   * mean along the light's line, scatterer_transport_sweep.glsl), in grid order
+   * (x fastest), rebuilt for that light alone. Empty if none.
    */
   std::vector<float> ReadTransmittance(vtkOpenGLRenderWindow* window, int light);
 
