@@ -51,9 +51,10 @@ void main()
     medium += m;
     // Outside the grid the medium is empty: the clamped texel adds nothing.
     // A(q) from its texel's mean (the sweep's T_texel = T(q) cosh(tau_half)), with
-    // tau_half over half a fine texel of q's medium.
-    float tauHalf = 0.5 * st_occlusionScale * m.a * fineSize;
-    source += m.a * m.rgb * st_arrivingAtTexel(clamp(ivec3(fine + o), ivec3(0), last)) / cosh(tauHalf);
+    // tau_half over half a fine texel of q's medium; 1 / cosh without overflow.
+    float e = exp(-0.5 * st_occlusionScale * m.a * fineSize);
+    float toCentre = 2.0 * e / (1.0 + e * e);
+    source += m.a * m.rgb * st_arrivingAtTexel(clamp(ivec3(fine + o), ivec3(0), last)) * toCentre;
   }
   medium /= b * b * b;
   source /= b * b * b;

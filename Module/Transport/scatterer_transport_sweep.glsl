@@ -133,8 +133,10 @@ void main()
     tau *= len / float(st_substeps);
     tauHalf *= len / float(st_substeps);
     T = Tq * exp(-tau);
-    // The texel's mean light, (T_in + T_out) / 2 = T cosh(tauHalf).
-    Tmean = T * cosh(tauHalf);
+    // The texel's mean light, (T_in + T_out) / 2 = T cosh(tauHalf), written with
+    // exponents <= 0 (tauHalf <= tau): T cosh(tauHalf) overflows to 0 * inf in
+    // opaque voxels hundreds of mean free paths deep.
+    Tmean = 0.5 * Tq * (exp(tauHalf - tau) + exp(-tauHalf - tau));
   }
   gl_FragData[0] = vec4(T);
   vec3 index = (st_texToIndex * vec4(st_gridToTexture(j), 1.0)).xyz;

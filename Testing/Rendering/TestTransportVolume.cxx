@@ -673,3 +673,28 @@ TEST(TransportVolume, ThickTexelHoldsTheMeanOfTheLightEnteringAndLeavingIt)
     EXPECT_NEAR(scene.At(t, 16, 16, k), mean, 0.01 * mean) << "k = " << k << ", T(p) = " << centre;
   }
 }
+
+TEST(TransportVolume, OpaqueVoxelsManyMeanFreePathsDeepStayFinite)
+{
+  // Opacity 1 per unit in voxels 20 units wide: hundreds of mean free paths per texel,
+  // where exp(-tau) underflows and cosh(tau / 2) overflows in single precision. The texel
+  // mean must still be a number in [0, 1], and so must the light received.
+  const int n = 16;
+  auto image = MakeVolume(n, 20.0, Slab(4, 11));
+  TransportScene scene(image, 1.0);
+  scene.SetDirectional(0.3, 0.2, 1.0);
+  const auto t = scene.Transmittance();
+  ASSERT_EQ(t.size(), static_cast<size_t>(n * n * n));
+  size_t bad = 0;
+  for (float v : t)
+    bad += !(v >= 0.0f && v <= 1.0f);
+  EXPECT_EQ(bad, 0u) << "transmittance texels outside [0, 1] or NaN";
+  EXPECT_NEAR(scene.At(t, 8, 8, 14), 1.0, 1e-3) << "above the slab the light is unattenuated";
+  EXPECT_LT(scene.At(t, 8, 8, 6), 1e-3) << "inside the opaque slab there is no light";
+  const auto light = scene.ReceivedLight();
+  ASSERT_EQ(light.size(), static_cast<size_t>(3 * n * n * n));
+  bad = 0;
+  for (float v : light)
+    bad += !std::isfinite(v);
+  EXPECT_EQ(bad, 0u) << "received light not finite";
+}
