@@ -349,8 +349,23 @@ std::vector<float> enteringDepth(const Map& map, const std::vector<Box>& owned, 
     throw std::invalid_argument("lightspace::enteringDepth: the step must be > 0");
   }
   std::vector<float> entering(static_cast<size_t>(map.size) * map.size, 0.0f);
+  // The other pieces whose window crosses each row, in piece order: only their lines
+  // carry depth (outside its window a piece has no matter on the line, so nothing to
+  // add and nothing of it in the reach to take off). A line through this piece then
+  // clips the few pieces it crosses, not all P of them.
+  std::vector<std::vector<int>> byRow(static_cast<size_t>(map.size));
+  for (size_t k = 0; k < owned.size(); ++k) {
+    const DepthWindow& w = depths[k];
+    if (static_cast<int>(k) == self || w.empty()) {
+      continue;
+    }
+    for (int j = std::max(w.y0, 0); j < std::min(w.y0 + w.height, map.size); ++j) {
+      byRow[static_cast<size_t>(j)].push_back(static_cast<int>(k));
+    }
+  }
   forRows(map.size, [&](int first, int last) {
     for (int j = first; j < last; ++j) {
+      const std::vector<int>& crossing = byRow[static_cast<size_t>(j)];
       for (int i = 0; i < map.size; ++i) {
         const Line l = map.line(i, j);
         double t0, t1, r0, r1;
@@ -365,16 +380,17 @@ std::vector<float> enteringDepth(const Map& map, const std::vector<Box>& owned, 
         const double here = 0.5 * (t0 + t1);
         const size_t texel = static_cast<size_t>(j) * map.size + i;
         double sum = 0.0;
-        for (size_t k = 0; k < owned.size(); ++k) {
+        for (const int k : crossing) {
+          const DepthWindow& w = depths[static_cast<size_t>(k)];
           double s0, s1;
-          if (static_cast<int>(k) == self || depths[k].empty() || !clip(l, owned[k], s0, s1)) {
+          if (i < w.x0 || i >= w.x0 + w.width || !clip(l, owned[static_cast<size_t>(k)], s0, s1)) {
             continue;
           }
           // Disjoint boxes: the one whose part of the line comes first is in front.
           if (0.5 * (s0 + s1) >= here) {
             continue;
           }
-          sum += depths[k].at(i, j);
+          sum += w.at(i, j);
           // Its part inside the reach: this piece's sweep crosses that itself.
           const double a = std::max(s0, r0), b = std::min(s1, r1);
           if (inReach && a < b) {
