@@ -16,7 +16,7 @@ namespace ls = scatterer::lightspace;
 
 namespace
 {
-constexpr int kSide = 509; // voxels per side: S = 512 lines
+constexpr int kSide = 509; // voxels per side (512 lines a side for a light along an axis)
 
 ls::Box Piece(int k, int x, int y, int z)
 {
