@@ -12,8 +12,9 @@
 // point sample: see ScattererTransportGrid.cxx, CoarseGrid::Over. The arriving light's
 // texels hold their mean along each light's line, A(q) cosh(tau_half)
 // (scatterer_transport_sweep.glsl); the source takes the value at q back from it, with
-// tau_half = sigma_t(q) h / 2 for a fine texel of mean size h (exact for a light along
-// an axis; a light across the texel's diagonal crosses up to sqrt(3) h of it).
+// tau_half = OcclusionStrength sigma_t(q) h / 2 (the sweep's attenuation) for a fine
+// texel of mean size h (exact for a light along an axis; a light across the texel's
+// diagonal crosses up to sqrt(3) h of it).
 //
 // Its alpha also carries the ambient occlusion of the block centre p: VTK's ambient
 // light comes from every direction, so it is occluded by the medium around p.
