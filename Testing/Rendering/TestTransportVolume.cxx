@@ -148,14 +148,25 @@ Filler Slab(int zLo, int zHi)
 {
   return [=](int, int, int k) -> unsigned char { return k >= zLo && k <= zHi ? 200 : 0; };
 }
+
+// The slab z in [zLo, zHi] of an n^3 volume of voxels `spacing` wide, opacity `alpha`
+// per unit, lit by a directional light from (x, y, z).
+struct LitSlab
+{
+  TransportScene Scene;
+  LitSlab(int n, double spacing, int zLo, int zHi, double alpha, double x, double y, double z)
+    : Scene(MakeVolume(n, spacing, Slab(zLo, zHi)), alpha)
+  {
+    this->Scene.SetDirectional(x, y, z);
+  }
+};
 }
 
 TEST(TransportVolume, SlabAxisAlignedLightIsBeerLambert)
 {
   const int n = 32;
-  auto image = MakeVolume(n, 1.0, Slab(8, 23));
-  TransportScene scene(image, 0.1);
-  scene.SetDirectional(0, 0, 1); // from +z
+  LitSlab slab(n, 1.0, 8, 23, 0.1, 0, 0, 1); // from +z
+  TransportScene& scene = slab.Scene;
   const auto t = scene.Transmittance();
   ASSERT_EQ(t.size(), static_cast<size_t>(n * n * n));
   const double sigma = -std::log(1.0 - 0.1);
@@ -659,9 +670,8 @@ TEST(TransportVolume, ThickTexelHoldsTheMeanOfTheLightEnteringAndLeavingIt)
   // (scatterer_transport_sweep.glsl). In such a texel the two differ by 1.74x: T(p)
   // alone is the light half a texel deep, which is what showed the grid on bone.
   const int n = 32;
-  auto image = MakeVolume(n, 1.0, Slab(8, 23));
-  TransportScene scene(image, 0.9);
-  scene.SetDirectional(0, 0, 1);
+  LitSlab slab(n, 1.0, 8, 23, 0.9, 0, 0, 1);
+  TransportScene& scene = slab.Scene;
   const auto t = scene.Transmittance();
   ASSERT_EQ(t.size(), static_cast<size_t>(n * n * n));
   const double sigma = -std::log(1.0 - 0.9);
@@ -680,9 +690,8 @@ TEST(TransportVolume, OpaqueVoxelsManyMeanFreePathsDeepStayFinite)
   // where exp(-tau) underflows and cosh(tau / 2) overflows in single precision. The texel
   // mean must still be a number in [0, 1], and so must the light received.
   const int n = 16;
-  auto image = MakeVolume(n, 20.0, Slab(4, 11));
-  TransportScene scene(image, 1.0);
-  scene.SetDirectional(0.3, 0.2, 1.0);
+  LitSlab slab(n, 20.0, 4, 11, 1.0, 0.3, 0.2, 1.0);
+  TransportScene& scene = slab.Scene;
   const auto t = scene.Transmittance();
   ASSERT_EQ(t.size(), static_cast<size_t>(n * n * n));
   size_t bad = 0;
