@@ -6,7 +6,6 @@
 #include "ScattererTransportPass.h"
 #include "ScattererTransportPrograms.h"
 #include "ScattererTransportProgress.h"
-#include "ScattererTransportTables.h"
 #include "ScattererTransportTextures.h"
 
 #include "vtkOpenGLQuadHelper.h"
@@ -22,46 +21,24 @@ namespace scatterer_gpu
 {
 namespace
 {
-// The coarse grid as the coarse passes' uniforms.
-struct CoarseUniforms
-{
-  float Dims[3];
-  float ToGrid[3];
-  float H[3]; // coarse texel size along each axis, world units
-
-  CoarseUniforms(const TransportGrid& grid, const CoarseGrid& coarse)
-  {
-    coarse.GetDims(this->Dims);
-    coarse.GetToGrid(this->ToGrid);
-    for (int a = 0; a < 3; ++a)
-    {
-      this->H[a] = static_cast<float>(coarse.Block * grid.TexelLength(a));
-    }
-  }
-};
-
-// Pass 3a: the coarse medium (mean albedo, sigma_t of each block), the coarse source
-// (mean light scattered once) and the ambient occlusion of each block's centre.
-void Coarsen(const TransportPass& pass, const SweepPlan& plan, const CoarseGrid& coarse,
+// Pass 3a: the multiple-scattering source on the coarse grid (mean light scattered
+// once), from the fine scattering coefficient of pass 0a and the lights' arriving light.
+void DrawSource(const TransportPass& pass, const SweepPlan& plan, const CoarseGrid& coarse,
   const CoarseUniforms& u)
 {
-  TransportTextures& textures = pass.Textures;
-  vtkShaderProgram* program = UseProgram(pass.Window, pass.Programs.Coarsen.get());
+  vtkShaderProgram* program = UseProgram(pass.Window, pass.Programs.Source.get());
   SetCommonUniforms(program, pass.Grid, pass.In);
   program->SetUniform3f("st_coarseDims", u.Dims);
   program->SetUniform3f("st_coarseToGrid", u.ToGrid);
-  program->SetUniform3f("st_h", u.H);
-  program->SetUniformi("st_aoSteps", 2);
   program->SetUniformi("st_block", coarse.Block);
-  ScopedVolume volume(program, pass.In);
-  ScopedSampler medium(program, "st_medium", pass.Tables.Medium);
+  ScopedSampler fineMedium(program, "st_fineMedium", pass.Textures.FineMedium);
   ScopedArrivingLight arriving(program, pass, plan);
-  DrawLayers(pass.Framebuffer, pass.Programs.Coarsen.get(), program,
-    { textures.CoarseMedium, textures.CoarseSource }, coarse.Dims[2]);
+  DrawLayers(pass.Framebuffer, pass.Programs.Source.get(), program, { pass.Textures.CoarseSource },
+    coarse.Dims[2]);
   pass.Progress.StepDone();
 }
 
-// Pass 3: Jacobi iterations of the diffusion equation, ping-pong between the two fluence
+// Pass 3b: Jacobi iterations of the diffusion equation, ping-pong between the two fluence
 // grids. Returns the grid holding the last iteration's phi.
 vtkTextureObject* Diffuse(
   const TransportPass& pass, const CoarseGrid& coarse, const CoarseUniforms& u, int iterations)
@@ -95,7 +72,7 @@ void Combine(const TransportPass& pass, const CoarseGrid& coarse, const CoarseUn
   const vtkScattererTransportVolume::Inputs& in = pass.In;
   vtkShaderProgram* program = UseProgram(pass.Window, pass.Programs.Combine.get());
   ScopedSampler phi(program, "st_fluence", fluence);
-  ScopedSampler occlusion(program, "st_occlusion", pass.Textures.CoarseSource);
+  ScopedSampler occlusion(program, "st_occlusion", pass.Textures.CoarseOcclusion);
   float ambient[3] = { 0, 0, 0 };
   for (const auto& light : in.Lights)
   {
@@ -137,7 +114,7 @@ bool AddScatteredAndAmbientLight(const TransportPass& pass, const SweepPlan& pla
   vtkOpenGLState* state = pass.Window->GetState();
   state->vtkglDisable(GL_BLEND);
   state->vtkglViewport(0, 0, coarse.Dims[0], coarse.Dims[1]);
-  Coarsen(pass, plan, coarse, uniforms);
+  DrawSource(pass, plan, coarse, uniforms);
   vtkTextureObject* fluence = Diffuse(pass, coarse, uniforms, DiffusionIterations(pass.In));
   Combine(pass, coarse, uniforms, fluence);
   return true;

@@ -57,16 +57,29 @@ void DetachAll(vtkOpenGLFramebufferObject* framebuffer)
 void DrawLayers(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLQuadHelper* quad,
   vtkShaderProgram* program, std::initializer_list<vtkTextureObject*> targets, int layers)
 {
+  DrawLayersWhere(framebuffer, quad, program, targets, layers, [](int) { return true; });
+}
+
+void DrawLayersWhere(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLQuadHelper* quad,
+  vtkShaderProgram* program, std::initializer_list<vtkTextureObject*> targets, int layers,
+  const std::function<bool(int)>& draw)
+{
+  bool first = true;
   for (int z = 0; z < layers; ++z)
   {
+    if (!draw(z))
+    {
+      continue;
+    }
     unsigned int index = 0;
     for (vtkTextureObject* target : targets)
     {
       AttachLayer(index++, target, z);
     }
-    if (z == 0)
+    if (first)
     {
       framebuffer->ActivateDrawBuffers(index);
+      first = false;
     }
     program->SetUniformf("st_layer", static_cast<float>(z));
     quad->Render();

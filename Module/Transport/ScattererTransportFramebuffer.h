@@ -6,6 +6,7 @@
 
 #include "vtkOpenGLState.h" // for the scoped state
 
+#include <functional>
 #include <initializer_list>
 
 class vtkOpenGLFramebufferObject;
@@ -51,6 +52,11 @@ void DetachAll(vtkOpenGLFramebufferObject* framebuffer);
  * st_layer. Detaches them after. */
 void DrawLayers(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLQuadHelper* quad,
   vtkShaderProgram* program, std::initializer_list<vtkTextureObject*> targets, int layers);
+
+/** DrawLayers, for the layers @p z for which @p draw(z) holds. */
+void DrawLayersWhere(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLQuadHelper* quad,
+  vtkShaderProgram* program, std::initializer_list<vtkTextureObject*> targets, int layers,
+  const std::function<bool(int)>& draw);
 
 /** Sums what the following draws write into what the targets hold (additive blending). */
 void BlendAdditively(vtkOpenGLState* state);

@@ -136,6 +136,16 @@ void CoarseGrid::GetToGrid(float toGrid[3]) const
   }
 }
 
+CoarseUniforms::CoarseUniforms(const TransportGrid& grid, const CoarseGrid& coarse)
+{
+  coarse.GetDims(this->Dims);
+  coarse.GetToGrid(this->ToGrid);
+  for (int a = 0; a < 3; ++a)
+  {
+    this->H[a] = static_cast<float>(coarse.Block * grid.TexelLength(a));
+  }
+}
+
 void SweepPlan::GetSweepDims(const TransportGrid& grid, int dims[3]) const
 {
   dims[0] = grid.Dims[this->Row];

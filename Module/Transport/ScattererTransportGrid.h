@@ -66,6 +66,16 @@ struct CoarseGrid
   void GetToGrid(float toGrid[3]) const;
 };
 
+/** The coarse grid as the coarse passes' uniforms (st_coarseDims, st_coarseToGrid, st_h). */
+struct CoarseUniforms
+{
+  float Dims[3];
+  float ToGrid[3];
+  float H[3]; ///< coarse texel size along each axis, world units
+
+  CoarseUniforms(const TransportGrid& grid, const CoarseGrid& coarse);
+};
+
 /** How one light is swept: the grid axis the slices run along (the light's dominant
  * axis in grid units) and the other two in order. */
 struct SweepPlan

@@ -38,7 +38,7 @@ private:
 };
 }
 
-std::uint64_t TransportKey(const vtkScattererTransportVolume::Inputs& in)
+std::uint64_t MediumKey(const vtkScattererTransportVolume::Inputs& in)
 {
   Fingerprint f;
   f.Add(in.Volume);
@@ -65,8 +65,6 @@ std::uint64_t TransportKey(const vtkScattererTransportVolume::Inputs& in)
   f.Add(in.CropMax, 3);
   f.Add(in.Bleed);
   f.Add(in.Boundary);
-  f.Add(in.MultipleScattering);
-  f.Add(in.DiffusionIterations);
   f.Add(in.TablesVersion);
   f.Add(in.TexToWorld, 16);
   f.Add(in.TexToDataset, 16);
@@ -81,6 +79,15 @@ std::uint64_t TransportKey(const vtkScattererTransportVolume::Inputs& in)
     f.Add(part.ScalarBias);
     f.Add(part.BoxToTexture, 16);
   }
+  return f.Value();
+}
+
+std::uint64_t TransportKey(const vtkScattererTransportVolume::Inputs& in)
+{
+  Fingerprint f;
+  f.Add(MediumKey(in));
+  f.Add(in.MultipleScattering);
+  f.Add(in.DiffusionIterations);
   for (const auto& l : in.Lights)
   {
     f.Add(l.Toward, 3);

@@ -16,6 +16,13 @@ namespace scatterer_gpu
  * content, so that the key is cheap enough for every frame.
  */
 std::uint64_t TransportKey(const vtkScattererTransportVolume::Inputs& inputs);
+
+/**
+ * The fingerprint of what no light changes (the volume, its transfer functions and
+ * placement, clipping, cropping, the materials, the grid): the passes that depend on
+ * these alone (ScattererTransportMediumPasses) run again only when it changes.
+ */
+std::uint64_t MediumKey(const vtkScattererTransportVolume::Inputs& inputs);
 }
 
 #endif

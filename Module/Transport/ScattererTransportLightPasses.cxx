@@ -187,20 +187,32 @@ void AddArrivingLight(const TransportPass& pass, const vtkScattererTransportVolu
 void GatherLight(const TransportPass& pass, const SweepPlan& plan)
 {
   const vtkScattererTransportVolume::Inputs& in = pass.In;
-  vtkShaderProgram* program = UseProgram(pass.Window, pass.Programs.Gather.get());
-  SetCommonUniforms(program, pass.Grid, in);
-  SetMaterialUniforms(program, in);
-  ScopedArrivingLight arriving(program, pass, plan);
-  ScopedVolume volume(program, in);
-  ScopedSampler medium(program, "st_medium", pass.Tables.Medium);
-  ScopedSampler kernel(program, "st_kernel", pass.Tables.Kernel);
-  ScopedSampler materials(program, "st_materialTable", pass.Tables.Materials);
-
+  const std::vector<int>& layerGathers = pass.Textures.LayerGathers;
   vtkOpenGLState* state = pass.Window->GetState();
   state->vtkglViewport(0, 0, pass.Grid.Dims[0], pass.Grid.Dims[1]);
   state->vtkglDisable(GL_BLEND);
-  DrawLayers(pass.Framebuffer, pass.Programs.Gather.get(), program, { pass.Textures.Light },
-    pass.Grid.Dims[2]);
+  // Each layer by the cheapest variant that serves all its texels (pass 0c).
+  for (int variant = 0; variant < GatherVariants; ++variant)
+  {
+    const auto drawn = [&](int z)
+    { return z < static_cast<int>(layerGathers.size()) && layerGathers[z] == variant; };
+    if (std::none_of(layerGathers.begin(), layerGathers.end(), [&](int v) { return v == variant; }))
+    {
+      continue;
+    }
+    vtkOpenGLQuadHelper* quad = pass.Programs.Gather[variant].get();
+    vtkShaderProgram* program = UseProgram(pass.Window, quad);
+    SetCommonUniforms(program, pass.Grid, in);
+    SetMaterialUniforms(program, in);
+    ScopedArrivingLight arriving(program, pass, plan);
+    ScopedSampler fineMedium(program, "st_fineMedium", pass.Textures.FineMedium);
+    ScopedVolume volume(program, in);
+    ScopedSampler medium(program, "st_medium", pass.Tables.Medium);
+    ScopedSampler kernel(program, "st_kernel", pass.Tables.Kernel);
+    ScopedSampler materials(program, "st_materialTable", pass.Tables.Materials);
+    DrawLayersWhere(
+      pass.Framebuffer, quad, program, { pass.Textures.Light }, pass.Grid.Dims[2], drawn);
+  }
   pass.Progress.StepDone();
 }
 }

@@ -18,8 +18,12 @@
 #include "scatterer_transport_coarsen.h"
 #include "scatterer_transport_combine.h"
 #include "scatterer_transport_common.h"
+#include "scatterer_transport_count.h"
 #include "scatterer_transport_diffuse.h"
 #include "scatterer_transport_gather.h"
+#include "scatterer_transport_materials.h"
+#include "scatterer_transport_medium.h"
+#include "scatterer_transport_source.h"
 #include "scatterer_transport_sweep.h"
 
 #include <algorithm>
@@ -30,13 +34,14 @@ namespace scatterer_gpu
 {
 namespace
 {
-// The common declarations, after the variant's defines, and the arriving light's
-// functions go where the pass has their tags.
+// The common declarations, after the variant's defines, the materials' and the
+// arriving light's functions go where the pass has their tags.
 std::string WithCommon(const char* pass, const std::string& variant)
 {
   std::string text = pass;
   const std::pair<std::string, std::string> chunks[] = { { "//VTK::Transport::Common",
                                                            variant + scatterer_transport_common },
+    { "//VTK::Transport::Materials", scatterer_transport_materials },
     { "//VTK::Transport::Arriving", scatterer_transport_arriving } };
   for (const auto& chunk : chunks)
   {
@@ -74,20 +79,25 @@ bool TransportPrograms::Create(
     return std::unique_ptr<vtkOpenGLQuadHelper>(
       new vtkOpenGLQuadHelper(window, vs.c_str(), fs.c_str(), ""));
   };
+  this->Medium = quad(WithCommon(scatterer_transport_medium, variant));
+  this->Coarsen = quad(WithCommon(scatterer_transport_coarsen, variant));
   this->Sweep = quad(WithCommon(scatterer_transport_sweep, variant));
   this->Arrive = quad(WithCommon(scatterer_transport_arrive, variant));
-  this->Gather = quad(WithCommon(scatterer_transport_gather, variant));
-  this->Coarsen = quad(WithCommon(scatterer_transport_coarsen, variant));
+  for (int g = 0; g < GatherVariants; ++g)
+  {
+    this->Gather[g] = quad(WithCommon(
+      scatterer_transport_gather, variant + "#define ST_GATHER " + std::to_string(g) + "\n"));
+  }
+  this->Count = quad(scatterer_transport_count);
+  this->Source = quad(WithCommon(scatterer_transport_source, variant));
   this->Diffuse = quad(scatterer_transport_diffuse);
   this->Combine = quad(scatterer_transport_combine);
-  for (auto* q :
-    { &this->Sweep, &this->Arrive, &this->Gather, &this->Coarsen, &this->Diffuse, &this->Combine })
+  for (auto* q : this->All())
   {
     if (!(*q)->Program)
     {
       why = "the transport shaders failed to compile on this OpenGL implementation";
-      for (auto* p : { &this->Sweep, &this->Arrive, &this->Gather, &this->Coarsen, &this->Diffuse,
-             &this->Combine })
+      for (auto* p : this->All())
       {
         p->reset();
       }
@@ -97,10 +107,16 @@ bool TransportPrograms::Create(
   return true;
 }
 
+std::array<std::unique_ptr<vtkOpenGLQuadHelper>*, 11> TransportPrograms::All()
+{
+  return { &this->Medium, &this->Coarsen, &this->Count, &this->Sweep, &this->Arrive,
+    &this->Gather[GatherArriving], &this->Gather[GatherTemplates],
+    &this->Gather[GatherAcrossMaterials], &this->Source, &this->Diffuse, &this->Combine };
+}
+
 void TransportPrograms::ReleaseGraphicsResources(vtkWindow* window)
 {
-  for (auto* q :
-    { &this->Sweep, &this->Arrive, &this->Gather, &this->Coarsen, &this->Diffuse, &this->Combine })
+  for (auto* q : this->All())
   {
     if (*q)
     {

@@ -6,6 +6,7 @@
 
 #include "vtkScattererTransportVolume.h" // for Inputs
 
+#include <array>  // for All
 #include <memory> // for std::unique_ptr
 #include <string>
 #include <vector> // for ScopedVolume::Parts
@@ -21,14 +22,28 @@ namespace scatterer_gpu
 struct SweepPlan;
 struct TransportGrid;
 
-/** The six pass programs, compiled together once per context and component rule. */
+/** The gather's variants (ST_GATHER in scatterer_transport_gather.glsl), cheapest
+ * first: a layer is drawn by the first that serves all its texels. */
+enum GatherVariant
+{
+  GatherArriving = 0,        ///< no texel in a material: the light arriving
+  GatherTemplates = 1,       ///< the templates, no photon in another material
+  GatherAcrossMaterials = 2, ///< photons in other materials: tint and rescale
+  GatherVariants = 3
+};
+
+/** The pass programs, compiled together once per context and component rule. */
 struct TransportPrograms
 {
+  std::unique_ptr<vtkOpenGLQuadHelper> Medium;  ///< pass 0a: what no light changes, fine grid
+  std::unique_ptr<vtkOpenGLQuadHelper> Coarsen; ///< pass 0b: medium and occlusion, coarse grid
+  std::unique_ptr<vtkOpenGLQuadHelper> Count;   ///< pass 0c: which gather each layer needs
   std::unique_ptr<vtkOpenGLQuadHelper> Sweep;   ///< pass 1: transmittance, slice by slice
   std::unique_ptr<vtkOpenGLQuadHelper> Arrive;  ///< pass 2a: a light's arriving light
-  std::unique_ptr<vtkOpenGLQuadHelper> Gather;  ///< pass 2b: template in-scattering
-  std::unique_ptr<vtkOpenGLQuadHelper> Coarsen; ///< pass 3a: medium and source, coarse grid
-  std::unique_ptr<vtkOpenGLQuadHelper> Diffuse; ///< pass 3: one Jacobi iteration
+  /// pass 2b: template in-scattering, per GatherVariant
+  std::unique_ptr<vtkOpenGLQuadHelper> Gather[GatherVariants];
+  std::unique_ptr<vtkOpenGLQuadHelper> Source;  ///< pass 3a: light scattered once, coarse grid
+  std::unique_ptr<vtkOpenGLQuadHelper> Diffuse; ///< pass 3b: one Jacobi iteration
   std::unique_ptr<vtkOpenGLQuadHelper> Combine; ///< pass 4: coarse light added to the fine
   std::string CreatedVariant;                   ///< the defines they were compiled with
 
@@ -49,6 +64,9 @@ struct TransportPrograms
   bool Create(vtkOpenGLRenderWindow* window, const std::string& variant, std::string& why);
 
   void ReleaseGraphicsResources(vtkWindow* window);
+
+private:
+  std::array<std::unique_ptr<vtkOpenGLQuadHelper>*, 11> All();
 };
 
 /** Makes @p quad's program current in @p window and returns it. */

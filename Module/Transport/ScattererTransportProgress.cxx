@@ -6,11 +6,12 @@
 
 namespace scatterer_gpu
 {
-void TransportProgress::BeginBuild(int lights, int iterations)
+void TransportProgress::BeginBuild(int lights, int iterations, bool medium)
 {
   this->Done = 0;
-  // + the gather, the coarsening, the combine
-  this->Total = lights * (kSweepSteps + 1) + 3 + iterations;
+  this->BeforeSweeps = medium ? 1 : 0;
+  // + the gather, the source, the combine
+  this->Total = this->BeforeSweeps + lights * (kSweepSteps + 1) + 3 + iterations;
   this->Building = true;
 }
 
@@ -27,7 +28,7 @@ void TransportProgress::StepDone()
 void TransportProgress::SweepDone(int light)
 {
   // A sweep of fewer than kSweepSteps slices reports fewer: count it as kSweepSteps.
-  this->Done = light * (kSweepSteps + 1) + kSweepSteps - 1;
+  this->Done = this->BeforeSweeps + light * (kSweepSteps + 1) + kSweepSteps - 1;
   this->StepDone();
 }
 

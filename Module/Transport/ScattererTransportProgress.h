@@ -1,6 +1,7 @@
 // The progress of a light transport build, reported as the fraction of its stages the
-// GPU has done: per light its sweep (kSweepSteps reports) and the light it brings, then
-// the gather, the coarsening, each diffusion iteration and the final combine.
+// GPU has done: the medium passes when the medium changed, per light its sweep
+// (kSweepSteps reports) and the light it brings, then the gather, the source, each
+// diffusion iteration and the final combine.
 #ifndef ScattererTransportProgress_h
 #define ScattererTransportProgress_h
 
@@ -18,8 +19,9 @@ public:
   /** The callback (vtkScattererTransportVolume::SetProgressCallback); unset, nothing waits. */
   void SetCallback(std::function<void(double)> callback) { this->Callback = std::move(callback); }
 
-  /** A build of @p lights lights and @p iterations diffusion iterations starts. */
-  void BeginBuild(int lights, int iterations);
+  /** A build of @p lights lights and @p iterations diffusion iterations starts, with
+   * the medium passes first if @p medium. */
+  void BeginBuild(int lights, int iterations, bool medium);
   /** The build is over (done or failed): later stages (a test's sweep) report nothing. */
   void EndBuild() { this->Building = false; }
 
@@ -38,6 +40,7 @@ private:
   std::function<void(double)> Callback;
   bool Building = false; // in a build (not a test's sweep alone)
   int Done = 0, Total = 1;
+  int BeforeSweeps = 0; // stages before the first sweep
 };
 }
 

@@ -24,14 +24,15 @@ size_t Texels(vtkTextureObject* texture)
     : 0;
 }
 
-// Allocates `texture` as a new RGBA16F 3D texture of `dims` (linear, clamped to edge).
-bool AllocateRGBA16F(
-  vtkOpenGLRenderWindow* window, vtkSmartPointer<vtkTextureObject>& texture, const int dims[3])
+// Allocates `texture` as a new RGBA16F (4 components) or R16F (1) 3D texture of `dims`
+// (linear, clamped to edge).
+bool Allocate16F(vtkOpenGLRenderWindow* window, vtkSmartPointer<vtkTextureObject>& texture,
+  const int dims[3], int components = 4)
 {
   texture = NewTransportTexture(window, true, vtkTextureObject::ClampToEdge);
-  texture->SetInternalFormat(GL_RGBA16F);
-  texture->SetFormat(GL_RGBA);
-  if (!texture->Allocate3D(dims[0], dims[1], dims[2], 4, VTK_FLOAT))
+  texture->SetInternalFormat(components == 1 ? GL_R16F : GL_RGBA16F);
+  texture->SetFormat(components == 1 ? GL_RED : GL_RGBA);
+  if (!texture->Allocate3D(dims[0], dims[1], dims[2], components, VTK_FLOAT))
   {
     texture = nullptr; // allocated again next time
     return false;
@@ -78,13 +79,15 @@ std::vector<float> DownloadTexture3D(vtkTextureObject* texture, int components)
 bool TransportTextures::AllocateFine(
   vtkOpenGLRenderWindow* window, const int dims[3], std::string& why)
 {
-  if (HasSize(this->Light, dims[0], dims[1], dims[2]))
+  if (HasSize(this->Light, dims[0], dims[1], dims[2]) &&
+    HasSize(this->FineMedium, dims[0], dims[1], dims[2]))
   {
     return true;
   }
-  if (!AllocateRGBA16F(window, this->Light, dims))
+  ++this->MediumAllocations;
+  if (!Allocate16F(window, this->Light, dims) || !Allocate16F(window, this->FineMedium, dims))
   {
-    why = "the light texture could not be allocated";
+    why = "the light textures could not be allocated";
     return false;
   }
   return true;
@@ -99,7 +102,7 @@ bool TransportTextures::AllocateArriving(
   {
     return true;
   }
-  if (!AllocateRGBA16F(window, this->Arriving, padded))
+  if (!Allocate16F(window, this->Arriving, padded))
   {
     why = "the arriving-light texture could not be allocated";
     return false;
@@ -149,18 +152,25 @@ bool TransportTextures::AllocateSweep(
 bool TransportTextures::AllocateCoarse(
   vtkOpenGLRenderWindow* window, const int dims[3], std::string& why)
 {
-  if (HasSize(this->Fluence[0], dims[0], dims[1], dims[2]))
+  if (HasSize(this->Fluence[0], dims[0], dims[1], dims[2]) &&
+    HasSize(this->CoarseOcclusion, dims[0], dims[1], dims[2]))
   {
     return true;
   }
+  ++this->MediumAllocations;
   for (auto* grid :
     { &this->Fluence[0], &this->Fluence[1], &this->CoarseMedium, &this->CoarseSource })
   {
-    if (!AllocateRGBA16F(window, *grid, dims))
+    if (!Allocate16F(window, *grid, dims))
     {
       why = "the diffusion textures could not be allocated";
       return false;
     }
+  }
+  if (!Allocate16F(window, this->CoarseOcclusion, dims, 1))
+  {
+    why = "the diffusion textures could not be allocated";
+    return false;
   }
   return true;
 }
@@ -169,16 +179,19 @@ size_t TransportTextures::GetGPUBytes() const
 {
   constexpr size_t rgba16f = 8, r16f = 2;
   return rgba16f *
-    (Texels(this->Light) + Texels(this->Arriving) + Texels(this->Fluence[0]) +
-      Texels(this->Fluence[1]) + Texels(this->CoarseMedium) + Texels(this->CoarseSource)) +
-    r16f * (Texels(this->Transmittance) + Texels(this->Slices[0]) + Texels(this->Slices[1]));
+    (Texels(this->Light) + Texels(this->FineMedium) + Texels(this->Arriving) +
+      Texels(this->Fluence[0]) + Texels(this->Fluence[1]) + Texels(this->CoarseMedium) +
+      Texels(this->CoarseSource)) +
+    r16f *
+    (Texels(this->Transmittance) + Texels(this->Slices[0]) + Texels(this->Slices[1]) +
+      Texels(this->CoarseOcclusion));
 }
 
 void TransportTextures::ReleaseGraphicsResources(vtkWindow* window)
 {
-  for (auto* t :
-    { &this->Light, &this->Arriving, &this->Transmittance, &this->Slices[0], &this->Slices[1],
-      &this->Fluence[0], &this->Fluence[1], &this->CoarseMedium, &this->CoarseSource })
+  for (auto* t : { &this->Light, &this->FineMedium, &this->Arriving, &this->Transmittance,
+         &this->Slices[0], &this->Slices[1], &this->Fluence[0], &this->Fluence[1],
+         &this->CoarseMedium, &this->CoarseSource, &this->CoarseOcclusion })
   {
     if (*t)
     {

@@ -28,16 +28,25 @@ std::vector<float> DownloadTexture3D(vtkTextureObject* texture, int components);
 struct TransportTextures
 {
   vtkSmartPointer<vtkTextureObject> Light; ///< RGBA16F, fine grid: the light received
+  /// RGBA16F, fine grid: what no light changes (pass 0a): the source's scattering
+  /// coefficient, the gather each texel takes
+  vtkSmartPointer<vtkTextureObject> FineMedium;
+  /// Per layer of FineMedium, the gather variant it needs (a GatherVariant)
+  std::vector<int> LayerGathers;
   /// RGBA16F, fine grid + 1 texel a side: light arriving unscattered (null when unused)
   vtkSmartPointer<vtkTextureObject> Arriving;
-  vtkSmartPointer<vtkTextureObject> Transmittance; ///< R16F, sweep order
-  vtkSmartPointer<vtkTextureObject> Slices[2];     ///< R16F, ping-pong of the sweep
-  vtkSmartPointer<vtkTextureObject> Fluence[2];    ///< RGBA16F, coarse grid: diffusion ping-pong
-  vtkSmartPointer<vtkTextureObject> CoarseMedium;  ///< RGBA16F, coarse grid: albedo, sigma_t
-  vtkSmartPointer<vtkTextureObject>
-    CoarseSource; ///< RGBA16F, coarse grid: light scattered once, occlusion
+  vtkSmartPointer<vtkTextureObject> Transmittance;   ///< R16F, sweep order
+  vtkSmartPointer<vtkTextureObject> Slices[2];       ///< R16F, ping-pong of the sweep
+  vtkSmartPointer<vtkTextureObject> Fluence[2];      ///< RGBA16F, coarse grid: diffusion ping-pong
+  vtkSmartPointer<vtkTextureObject> CoarseMedium;    ///< RGBA16F, coarse grid: albedo, sigma_t
+  vtkSmartPointer<vtkTextureObject> CoarseSource;    ///< RGBA16F, coarse grid: light scattered once
+  vtkSmartPointer<vtkTextureObject> CoarseOcclusion; ///< R16F, coarse grid: ambient occlusion
 
-  /** Light on the fine grid of @p dims; false with @p why set if refused. */
+  /// Counts the allocations of FineMedium, CoarseMedium and CoarseOcclusion: what the
+  /// medium passes drew is gone when it changes.
+  int MediumAllocations = 0;
+
+  /** Light and FineMedium on the fine grid of @p dims; false with @p why set if refused. */
   bool AllocateFine(vtkOpenGLRenderWindow* window, const int dims[3], std::string& why);
 
   /** Arriving for the fine grid of @p dims (one texel more a side), needed by builds
@@ -51,7 +60,7 @@ struct TransportTextures
    * @p why set if refused. */
   bool AllocateSweep(vtkOpenGLRenderWindow* window, const int sweepDims[3], std::string& why);
 
-  /** The four coarse grids of @p dims; false with @p why set if refused. */
+  /** The five coarse grids of @p dims; false with @p why set if refused. */
   bool AllocateCoarse(vtkOpenGLRenderWindow* window, const int dims[3], std::string& why);
 
   /** Bytes of GPU memory the textures held take. */

@@ -5,11 +5,11 @@
 // blending), both linearly interpolated from the coarse grid:
 // - the multiply scattered light: the diffusion's fluence times MultipleScattering;
 // - VTK's ambient term (ka x the lights' ambient colours) times its occlusion
-//   (scatterer_transport_coarsen.glsl).
+//   (pass 0b, scatterer_transport_coarsen.glsl).
 //============================================================================
 in vec2 texCoord;
 uniform sampler3D st_fluence;      // coarse grid, rgb (unused when st_strength is 0)
-uniform sampler3D st_occlusion;    // coarse grid, a: the ambient light's transmittance
+uniform sampler3D st_occlusion;    // coarse grid: the ambient light's transmittance (pass 0b)
 uniform vec3 st_ambient;
 uniform float st_layer;
 uniform vec3 st_gridDims;
@@ -25,5 +25,5 @@ void main()
   vec3 c = (j - st_coarseToGrid - vec3(0.5 * (st_block - 1.0))) / st_block;
   vec3 coarse = (c + vec3(0.5)) / st_coarseDims;
   vec3 scattered = st_strength > 0.0 ? st_strength * texture(st_fluence, coarse).rgb : vec3(0.0);
-  gl_FragData[0] = vec4(scattered + st_ambient * texture(st_occlusion, coarse).a, 1.0);
+  gl_FragData[0] = vec4(scattered + st_ambient * texture(st_occlusion, coarse).r, 1.0);
 }

@@ -1,20 +1,21 @@
 //VTK::System::Dec
 //VTK::Output::Dec
 //============================================================================
-// Light transport volume, pass 3: multiple scattering by diffusion (one layer
+// Light transport volume, pass 3b: multiple scattering by diffusion (one layer
 // per draw, Jacobi sweeps on a coarse grid of about 4 voxels; after vpt,
 // Zbontar & Lesar, which carries multiple scattering by diffusion).
 //
 // The diffusion approximation of the light scattered more than once, per colour
 // channel (Ishimaru; Jensen et al. 2001, Eq. 4):
 //   -div(D grad phi) + sigma_a phi = S,   D = 1 / (3 sigma_t),  sigma_a = sigma_t (1 - albedo)
-// S (from the gather) is the light scattered once; phi the fluence it becomes.
+// S is the light scattered once; phi the fluence it becomes.
 // Discretised on the coarse grid with spacing h_a along axis a and solved by Jacobi
 // iteration (D taken at the texel):
 //   phi(x) = (S(x) + D sum_a (phi(x + e_a) + phi(x - e_a)) / h_a^2)
 //            / (2 D sum_a 1 / h_a^2 + sigma_a)
 // Where there is no medium the light escapes (phi = 0), as it does past the grid.
-// The coarse medium and source come from scatterer_transport_coarsen.glsl.
+// The coarse medium comes from pass 0b (scatterer_transport_coarsen.glsl), the
+// source from pass 3a (scatterer_transport_source.glsl).
 //============================================================================
 in vec2 texCoord;
 uniform sampler3D st_coarseMedium; // coarse grid: rgb albedo, a sigma_t

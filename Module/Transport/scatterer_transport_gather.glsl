@@ -14,52 +14,51 @@
 //   material (colour bleeding, section 3.3). Such a photon's offset is rescaled by
 //   the speed ratio n_m / n_mp and its weight by the opacity ratio (section 3.4).
 // A point outside every material receives A(p) itself.
+//
+// Which of the three the texel needs comes from the medium pass (st_fineMedium, pass
+// 0a, scatterer_transport_medium.glsl): the light moves every frame of an orbit, the
+// materials do not. The program comes in three variants (ST_GATHER), each layer drawn
+// by the cheapest one that serves all its texels (ScattererTransportMediumPasses):
+// - ST_GATHER_ARRIVING: no texel of the layer is in a material: R = A;
+// - ST_GATHER_TEMPLATES: no photon of the layer lands in another material: the photons
+//   need no material look-up (no tint, no rescale);
+// - ST_GATHER_ACROSS_MATERIALS: the texels whose photons cross into another material
+//   look the material up at each photon.
+// A branch does not spare what it skips on every OpenGL: Mesa's llvmpipe runs both
+// sides of a branch for a whole SIMD group, so one program with the three cases cost
+// 344 ms per light change on the CT head (2 cores), the three variants 52 ms.
 //============================================================================
 //VTK::Transport::Common
+//VTK::Transport::Materials
 //VTK::Transport::Arriving
 in vec2 texCoord;
-#define ST_MAX_MATERIALS 8
-uniform sampler2D st_kernel;       // row m: (offset in world units, weight), st_kernelCount wide
-uniform int st_kernelCount;
+uniform sampler3D st_fineMedium;   // pass 0a: a = -1 (none), m, or m + ST_MIXED
 uniform float st_layer;
-uniform mat3 st_worldToGrid;
-uniform int st_materialCount;
-uniform sampler2D st_materialTable; // material index over the normalised scalar (a row per part), -1: none
-uniform vec3 st_matColor[ST_MAX_MATERIALS];
-uniform float st_speedRatio[ST_MAX_MATERIALS * ST_MAX_MATERIALS];
-uniform float st_opacityRatio[ST_MAX_MATERIALS * ST_MAX_MATERIALS];
-uniform int st_bleed;
-uniform int st_boundary;
-
-int st_materialAt(vec3 t)
-{
-  if (any(lessThan(t, vec3(0.0))) || any(greaterThan(t, vec3(1.0))) || !st_kept(t))
-  {
-    return -1;
-  }
-  vec2 at = st_materialCoordAt(t);
-  return at.y < 0.0 ? -1 : int(floor(texture(st_materialTable, at).r + 0.5));
-}
 
 void main()
 {
   vec3 j = vec3(floor(texCoord * st_gridDims.xy), st_layer);
-  vec3 t = st_gridToTexture(j);
-  int m = st_materialAt(t);
+  float gather = texelFetch(st_fineMedium, ivec3(j), 0).a;
   vec3 single = st_arrivingAt(j);
-  if (m >= 0)
+#if ST_GATHER != ST_GATHER_ARRIVING
+  if (gather >= 0.0)
   {
+#if ST_GATHER == ST_GATHER_ACROSS_MATERIALS
+    bool mixed = gather >= float(ST_MIXED);
+#else
+    const bool mixed = false;
+#endif
+    int m = int(gather + 0.5) - (mixed ? ST_MIXED : 0);
     vec3 sum = vec3(0.0);
     float weights = 0.0;
-    // Only bleeding and the boundary rescale need the material at each photon.
-    bool lookAtPhotons = st_materialCount > 1 && (st_bleed != 0 || st_boundary != 0);
     for (int k = 0; k < st_kernelCount; ++k)
     {
-      vec4 photon = texelFetch(st_kernel, ivec2(k, m), 0);
-      vec3 offset = st_worldToGrid * photon.xyz;
+      vec4 photon = st_photon(m, k);
+      vec3 offset = photon.xyz;
       float w = photon.w;
       vec3 tint = vec3(1.0);
-      if (lookAtPhotons)
+#if ST_GATHER == ST_GATHER_ACROSS_MATERIALS
+      if (mixed)
       {
         int mp = st_materialAt(st_gridToTexture(j + offset));
         if (st_boundary != 0 && mp >= 0 && mp != m)
@@ -70,10 +69,12 @@ void main()
         }
         tint = (st_bleed != 0 && mp >= 0 && mp != m) ? st_matColor[mp] : vec3(1.0);
       }
+#endif
       sum += w * tint * st_arrivingAt(j + offset);
       weights += photon.w;
     }
     single = weights > 0.0 ? sum / weights : single;
   }
+#endif
   gl_FragData[0] = vec4(single, 1.0);
 }

@@ -6,6 +6,7 @@
 //   ScattererTransportPrograms         the pass programs and the uniforms they share
 //   ScattererTransportTables           the medium and material tables, uploaded per build
 //   ScattererTransportTextures         the render targets and their allocation
+//   ScattererTransportMediumPasses     what no light changes, when the medium does
 //   ScattererTransportLightPasses      per light its sweep and arriving light; one gather
 //   ScattererTransportDiffusionPasses  multiple scattering and ambient light
 //   ScattererTransportFramebuffer      the GL state and layered draws of every pass
@@ -15,6 +16,7 @@
 #include "ScattererTransportGrid.h"
 #include "ScattererTransportKey.h"
 #include "ScattererTransportLightPasses.h"
+#include "ScattererTransportMediumPasses.h"
 #include "ScattererTransportPass.h"
 #include "ScattererTransportPrograms.h"
 #include "ScattererTransportProgress.h"
@@ -47,6 +49,12 @@ struct vtkScattererTransportVolume::vtkInternals
 
   std::uint64_t Key = 0; // scatterer_gpu::TransportKey of the inputs of the last build
   bool HasKey = false;
+  // scatterer_gpu::MediumKey of what the medium passes' textures hold, and
+  // Textures.MediumAllocations when they were drawn
+  std::uint64_t MediumKey = 0;
+  int MediumAllocations = 0;
+  bool HasMedium = false;
+  int MediumBuilds = 0;
   double LastMs = 0.0;
   int Builds = 0;
   scatterer_gpu::SweepPlan CurrentPlan; // of the light whose transmittance the texture holds
@@ -73,23 +81,35 @@ struct vtkScattererTransportVolume::vtkInternals
   void Release(vtkWindow* window);
 };
 
-// The passes of one build: per light its sweep and the light it brings (the direct
-// light last, read by the gather from its transmittance), then the template gather of
-// them all, then the diffusion.
+// The passes of one build: the medium's when it changed, per light its sweep and the
+// light it brings (the direct light last, read by the gather from its transmittance),
+// then the template gather of them all, then the diffusion.
 bool vtkScattererTransportVolume::vtkInternals::RunPasses(const Inputs& in, std::string& why)
 {
   scatterer_gpu::TransportPassState state(this->Context, this->Framebuffer);
   const scatterer_gpu::TransportPass pass = this->Pass(in);
   const int lights = static_cast<int>(in.Lights.size());
-  this->Progress.BeginBuild(lights, scatterer_gpu::DiffusionIterations(in));
+  const std::uint64_t mediumKey = scatterer_gpu::MediumKey(in);
+  const bool mediumChanged = !this->HasMedium || mediumKey != this->MediumKey ||
+    this->Textures.MediumAllocations != this->MediumAllocations;
+  this->Progress.BeginBuild(lights, scatterer_gpu::DiffusionIterations(in), mediumChanged);
   const int direct = scatterer_gpu::DirectLight(in);
-  // The lights of pass 2a need their texture; one directional light alone does not.
   bool ok = true;
-  if (scatterer_gpu::HasArrivingLights(in))
+  if (mediumChanged)
+  {
+    this->HasMedium = false;
+    ok = scatterer_gpu::BuildMediumTextures(pass, why);
+    ++this->MediumBuilds;
+    this->HasMedium = ok;
+    this->MediumKey = mediumKey;
+    this->MediumAllocations = this->Textures.MediumAllocations;
+  }
+  // The lights of pass 2a need their texture; one directional light alone does not.
+  if (ok && scatterer_gpu::HasArrivingLights(in))
   {
     ok = this->Textures.AllocateArriving(this->Context, this->Grid.Dims, why);
   }
-  else
+  else if (ok)
   {
     this->Textures.ReleaseArriving(this->Context);
   }
@@ -142,6 +162,7 @@ void vtkScattererTransportVolume::vtkInternals::Release(vtkWindow* window)
   this->Framebuffer->ReleaseGraphicsResources(window);
   this->Context = nullptr;
   this->HasKey = false;
+  this->HasMedium = false;
 }
 
 vtkScattererTransportVolume::vtkScattererTransportVolume()
@@ -298,6 +319,11 @@ int vtkScattererTransportVolume::GetBuildCount() const
   return this->Internals->Builds;
 }
 
+int vtkScattererTransportVolume::GetMediumBuildCount() const
+{
+  return this->Internals->MediumBuilds;
+}
+
 size_t vtkScattererTransportVolume::GetGPUBytes() const
 {
   return this->Internals->Textures.GetGPUBytes();
@@ -320,6 +346,7 @@ void vtkScattererTransportVolume::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Dimensions: " << s.Grid.Dims[0] << " x " << s.Grid.Dims[1] << " x "
      << s.Grid.Dims[2] << "\n";
   os << indent << "Builds: " << s.Builds << "\n";
+  os << indent << "MediumBuilds: " << s.MediumBuilds << "\n";
   os << indent << "LastBuildMilliseconds: " << s.LastMs << "\n";
   os << indent << "GPUBytes: " << this->GetGPUBytes() << "\n";
   os << indent << "SynchronousTiming: " << (this->SynchronousTiming ? "On" : "Off") << "\n";

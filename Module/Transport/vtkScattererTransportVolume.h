@@ -204,6 +204,11 @@ public:
   /** Rebuilds so far (for tests and benchmarks). */
   int GetBuildCount() const;
 
+  /** Builds so far that drew what no light changes again (for tests and benchmarks):
+   * the medium's passes run when the volume, its transfer functions or placement,
+   * clipping, cropping, the materials or the grid change, not when a light moves. */
+  int GetMediumBuildCount() const;
+
   /** GPU bytes held: the light and source textures, the transmittance, the slices, the diffusion
    * grids. */
   size_t GetGPUBytes() const;
@@ -221,9 +226,10 @@ public:
   void ReleaseGraphicsResources(vtkWindow* window);
 
   /**
-   * Called during a rebuild with the fraction of its passes done, (0, 1]: after each
-   * quarter of each light's sweep, the light each brings, the gather, the coarsening,
-   * each diffusion iteration and the final combine. The passes run on the GPU
+   * Called during a rebuild with the fraction of its passes done, (0, 1]: after the
+   * medium's passes (when the medium changed), each quarter of each light's sweep, the
+   * light each brings, the gather, the source, each diffusion iteration and the final
+   * combine. The passes run on the GPU
    * asynchronously, so with a callback set the build waits for each stage (glFinish)
    * before reporting it: the fraction then says what the GPU has done, not what was
    * queued. Unset (the default), nothing waits. The mapper forwards it as its

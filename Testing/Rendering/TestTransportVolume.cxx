@@ -451,6 +451,96 @@ TEST(TransportVolume, RebuiltOnlyWhenWhatItDependsOnChanges)
   window->RemoveRenderer(scene.Renderer);
 }
 
+// What no light changes (each texel's scattering coefficient and gather, the coarse
+// medium, the ambient occlusion: ScattererTransportMediumPasses) is drawn when the
+// medium changes, not when a light moves, and a build after a medium change lights as a
+// first build does.
+TEST(TransportVolume, MediumPassesRunWhenTheMediumChangesNotWhenALightMoves)
+{
+  const int n = 24;
+  auto image = MakeVolume(n, 1.0, Slab(8, 15));
+  const auto edit = [](TransportScene& scene)
+  {
+    scene.Property->GetScalarOpacity()->AddPoint(200, 0.6);
+    scene.Property->GetRGBTransferFunction()->AddRGBPoint(200, 1.0, 0.4, 0.2);
+    scene.SetDirectional(1, 0, 1);
+  };
+  TransportScene scene(image, 0.3);
+  scene.SetDirectional(0, 0, 1);
+  vtkRenderWindow* window = scatterer_testing::SharedWindow();
+  window->AddRenderer(scene.Renderer);
+  vtkScattererTransportVolume* transport = scene.Mapper->GetTransportVolume();
+  window->Render();
+  const int first = transport->GetMediumBuildCount();
+  ASSERT_GE(first, 1);
+  scene.SetDirectional(0, 1, 1);
+  window->Render();
+  EXPECT_EQ(transport->GetMediumBuildCount(), first) << "a light move drew the medium again";
+  edit(scene);
+  window->Render();
+  EXPECT_EQ(transport->GetMediumBuildCount(), first + 1) << "a transfer function edit was not seen";
+  const std::vector<float> edited =
+    transport->ReadLight(vtkOpenGLRenderWindow::SafeDownCast(window));
+  window->RemoveRenderer(scene.Renderer);
+
+  TransportScene fresh(image, 0.3);
+  edit(fresh);
+  const std::vector<float> expected = fresh.ReceivedLight();
+  ASSERT_EQ(edited.size(), expected.size());
+  float largest = 0.0f, worst = 0.0f;
+  for (size_t i = 0; i < edited.size(); ++i)
+  {
+    largest = std::max(largest, expected[i]);
+    worst = std::max(worst, std::abs(edited[i] - expected[i]));
+  }
+  std::printf("after the edit vs a first build: largest difference %g of %g\n", worst, largest);
+  EXPECT_LE(worst, 1e-6f * largest) << "the build after the edit used the old medium";
+}
+
+// Colour bleeding (Lee, Kwon, Shin 2016, section 3.3) where two materials touch: photons
+// of a texel that land in the other material carry its colour. Only the texels whose
+// photons cross take that gather (pass 0a marks them, and each layer is drawn by the
+// variant it needs), so the texels next to the interface are tinted and those far from
+// it are not.
+TEST(TransportVolume, TouchingMaterialsTintEachOtherAtTheirInterfaceOnly)
+{
+  const int n = 32;
+  // Material A (scalar 100) over z in [4, 15], material B (200) over [16, 27].
+  auto image = MakeVolume(n, 1.0,
+    [](int, int, int k) -> unsigned char { return k < 4 || k > 27 ? 0 : (k < 16 ? 100 : 200); });
+  const auto lightWith = [&image](bool bleed)
+  {
+    TransportScene scene(image, 0.3);
+    vtkPiecewiseFunction* opacity = scene.Property->GetScalarOpacity();
+    opacity->AddPoint(100, 0.3);
+    // Photons sit within a fraction of a texel here (a material's own mean free paths,
+    // in the templates' units), so they cross only where the material changes within
+    // one: the scalar, interpolated linearly, passes from A's range into B's 0.04 voxel
+    // past the last voxel of A.
+    scene.Property->SetInterpolationTypeToLinear();
+    scene.Mapper->AddScalarRangeMaterial(60, 103, 1.0, 1.0, 1.0, 1.0);
+    scene.Mapper->AddScalarRangeMaterial(104, 255, 1.0, 1.0, 0.2, 0.2);
+    scene.Mapper->SetColorBleedingEnabled(bleed);
+    scene.Mapper->SetMultipleScattering(0.0);
+    scene.SetDirectional(0, 0, -1); // from below: through B into A
+    return scene.ReceivedLight();
+  };
+  const std::vector<float> on = lightWith(true), off = lightWith(false);
+  ASSERT_EQ(on.size(), static_cast<size_t>(3 * n * n * n));
+  ASSERT_EQ(off.size(), on.size());
+  // Green over red of the light received at (16, 16, k): B's colour lowers it.
+  const auto greenOverRed = [n](const std::vector<float>& light, int k)
+  {
+    const size_t at = 3 * (16 + static_cast<size_t>(n) * (16 + static_cast<size_t>(n) * k));
+    return light[at + 1] / light[at];
+  };
+  const float nextTo = greenOverRed(on, 15), far = greenOverRed(on, 10);
+  std::printf("green / red in A: next to B %g (without bleeding %g), 5 texels away %g (%g)\n",
+    nextTo, greenOverRed(off, 15), far, greenOverRed(off, 10));
+  EXPECT_LT(nextTo, 0.97f * greenOverRed(off, 15)) << "B's colour did not bleed into A";
+  EXPECT_NEAR(far, greenOverRed(off, 10), 1e-3f) << "bleeding reached far from the interface";
+}
+
 // Interactive frames (allocated render time < 1 s) build coarser only when they must
 // rebuild: orbiting under a scene light keeps the still frames' volume (a coarse build
 // would be paid again when the user lets go); a light that moves gets a coarse build,

@@ -1,0 +1,51 @@
+//VTK::System::Dec
+//VTK::Output::Dec
+//============================================================================
+// Light transport volume, pass 0a: what each fine texel holds that no light changes
+// (one layer per draw). It runs when the medium does (the volume, its transfer
+// functions, clipping, cropping, the materials, the grid), not when a light moves:
+// an orbit under the headlight or ParaView's light kit moves the lights every frame.
+// - rgb: the texel's scattering coefficient as the multiple-scattering source takes
+//   it (scatterer_transport_source.glsl),
+//     sigma_t(q) albedo(q) / cosh(tau_half(q)),
+//   tau_half = OcclusionStrength sigma_t(q) h / 2 over half a fine texel of mean size
+//   h: the source is sigma_s(q) A(q), and the arriving light's texels hold their mean
+//   along each light's line, A(q) cosh(tau_half) (scatterer_transport_sweep.glsl);
+//   exact for a light along an axis (one across the texel's diagonal crosses up to
+//   sqrt(3) h of it).
+// - a: which gather the texel takes (scatterer_transport_gather.glsl): -1 outside
+//   every material; its material m when no photon of m's templates lands in another
+//   material (the photons then need no material look-up: no tint, no rescale); m + 8
+//   (ST_MIXED) when one does.
+//============================================================================
+//VTK::Transport::Common
+//VTK::Transport::Materials
+in vec2 texCoord;
+uniform float st_layer;
+uniform float st_fineSize; // a fine texel's mean size, world units
+
+void main()
+{
+  vec3 j = vec3(floor(texCoord * st_gridDims.xy), st_layer);
+  vec3 t = st_gridToTexture(j);
+  vec4 medium = st_mediumAt(t);
+  // 1 / cosh(tau_half) without overflow.
+  float e = exp(-0.5 * st_occlusionScale * medium.a * st_fineSize);
+  float toCentre = 2.0 * e / (1.0 + e * e);
+  int m = st_materialAt(t);
+  float gather = -1.0;
+  if (m >= 0)
+  {
+    bool mixed = false;
+    if (st_looksAtPhotons())
+    {
+      for (int k = 0; k < st_kernelCount && !mixed; ++k)
+      {
+        int mp = st_materialAt(st_gridToTexture(j + st_photon(m, k).xyz));
+        mixed = mp >= 0 && mp != m;
+      }
+    }
+    gather = float(m) + (mixed ? float(ST_MIXED) : 0.0);
+  }
+  gl_FragData[0] = vec4(medium.a * medium.rgb * toCentre, gather);
+}
