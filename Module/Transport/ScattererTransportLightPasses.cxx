@@ -35,7 +35,18 @@ bool SweepTransmittance(const TransportPass& pass, const vtkScattererTransportVo
     return false;
   }
 
-  vtkShaderProgram* program = UseProgram(pass.Window, pass.Programs.Sweep.get());
+  // A piece of a distributed volume: the depth in front of it (1 texel of zeros when
+  // none, so the sampler is always bound).
+  const vtkScattererTransportVolume::EnteringDepth* entering = light.Entering.get();
+  const bool hasEntering = entering && entering->Size > 0 &&
+    entering->Depth.size() == static_cast<size_t>(entering->Size) * entering->Size;
+  vtkOpenGLQuadHelper* quad = pass.Programs.Sweep(
+    pass.Window, light.Positional, hasEntering ? (entering->Positional ? 2 : 1) : 0, why);
+  if (!quad)
+  {
+    return false;
+  }
+  vtkShaderProgram* program = UseProgram(pass.Window, quad);
   SetCommonUniforms(program, pass.Grid, in);
   SetSweepOrder(program, plan);
   const float sweepDimsF[3] = { static_cast<float>(sweepDims[0]), static_cast<float>(sweepDims[1]),
@@ -43,21 +54,14 @@ bool SweepTransmittance(const TransportPass& pass, const vtkScattererTransportVo
   program->SetUniform3f("st_sweepDims", sweepDimsF);
   program->SetUniform3f("st_lightToward", light.Toward);
   program->SetUniform3f("st_lightPosition", light.Position);
-  program->SetUniformi("st_lightPositional", light.Positional ? 1 : 0);
   program->SetUniformi("st_substeps", std::max(1, in.Downsample));
   SetIndexUniforms(program, in);
-  // A piece of a distributed volume: the depth in front of it (1 texel of zeros when
-  // none, so the sampler is always bound).
-  const vtkScattererTransportVolume::EnteringDepth* entering = light.Entering.get();
-  const bool hasEntering = entering && entering->Size > 0 &&
-    entering->Depth.size() == static_cast<size_t>(entering->Size) * entering->Size;
   vtkSmartPointer<vtkTextureObject> enteringTexture =
     NewTransportTexture(pass.Window, true, vtkTextureObject::ClampToEdge);
   float none = 0.0f;
   enteringTexture->Create2DFromRaw(hasEntering ? entering->Size : 1,
     hasEntering ? entering->Size : 1, 1, VTK_FLOAT,
     hasEntering ? const_cast<float*>(entering->Depth.data()) : &none);
-  program->SetUniformi("st_entering", hasEntering ? (entering->Positional ? 2 : 1) : 0);
   if (hasEntering)
   {
     program->SetUniform3f("st_enteringLight", entering->Light);
@@ -99,7 +103,7 @@ bool SweepTransmittance(const TransportPass& pass, const vtkScattererTransportVo
         ScopedSampler previous(program, "st_previous", textures.Slices[1 - current]);
         program->SetUniformi("st_hasPrevious", first ? 0 : 1);
         program->SetUniformf("st_slice", static_cast<float>(k));
-        pass.Programs.Sweep->Render();
+        quad->Render();
       }
       current = 1 - current;
       first = false;

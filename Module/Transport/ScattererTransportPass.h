@@ -21,7 +21,7 @@ struct TransportPass
 {
   vtkOpenGLRenderWindow* Window;
   vtkOpenGLFramebufferObject* Framebuffer; ///< bound (TransportPassState)
-  const TransportPrograms& Programs;
+  TransportPrograms& Programs;             ///< the sweep's are compiled when first used
   const vtkScattererTransportVolume::Inputs& In;
   const TransportGrid& Grid;
   const TransportTables& Tables;

@@ -57,12 +57,17 @@ std::string WithCommon(const char* pass, const std::string& variant)
 
 std::string TransportPrograms::Variant(const vtkScattererTransportVolume::Inputs& in)
 {
-  // Which arriving light the passes read (scatterer_transport_arriving.glsl).
+  // How the medium is read (scatterer_transport_common.glsl) and which arriving light the
+  // passes read (scatterer_transport_arriving.glsl).
+  const int mask =
+    !in.Mask ? 0 : (in.LabelMask ? 2 : 1); // ST_NO_MASK, ST_BINARY_MASK, ST_LABEL_MASK
   return "#define ST_COMPONENT_MODE " + std::to_string(in.ComponentMode) +
     "\n#define ST_MATERIAL_COMPONENT " + std::to_string(in.MaterialComponent) +
-    "\n#define ST_PARTS " + std::to_string(std::max<size_t>(1, in.Parts.size())) +
-    "\n#define ST_DIRECT_LIGHT " + std::to_string(DirectLight(in) >= 0 ? 1 : 0) +
-    "\n#define ST_ARRIVING " + std::to_string(HasArrivingLights(in) ? 1 : 0) + "\n";
+    "\n#define ST_MASK " + std::to_string(mask) + "\n#define ST_CROPPING " +
+    std::to_string(in.Cropping ? 1 : 0) + "\n#define ST_PARTS " +
+    std::to_string(std::max<size_t>(1, in.Parts.size())) + "\n#define ST_DIRECT_LIGHT " +
+    std::to_string(DirectLight(in) >= 0 ? 1 : 0) + "\n#define ST_ARRIVING " +
+    std::to_string(HasArrivingLights(in) ? 1 : 0) + "\n";
 }
 
 TransportPrograms::TransportPrograms() = default;
@@ -81,7 +86,6 @@ bool TransportPrograms::Create(
   };
   this->Medium = quad(WithCommon(scatterer_transport_medium, variant));
   this->Coarsen = quad(WithCommon(scatterer_transport_coarsen, variant));
-  this->Sweep = quad(WithCommon(scatterer_transport_sweep, variant));
   this->Arrive = quad(WithCommon(scatterer_transport_arrive, variant));
   for (int g = 0; g < GatherVariants; ++g)
   {
@@ -107,11 +111,33 @@ bool TransportPrograms::Create(
   return true;
 }
 
-std::array<std::unique_ptr<vtkOpenGLQuadHelper>*, 11> TransportPrograms::All()
+std::array<std::unique_ptr<vtkOpenGLQuadHelper>*, 10> TransportPrograms::All()
 {
-  return { &this->Medium, &this->Coarsen, &this->Count, &this->Sweep, &this->Arrive,
+  return { &this->Medium, &this->Coarsen, &this->Count, &this->Arrive,
     &this->Gather[GatherArriving], &this->Gather[GatherTemplates],
     &this->Gather[GatherAcrossMaterials], &this->Source, &this->Diffuse, &this->Combine };
+}
+
+vtkOpenGLQuadHelper* TransportPrograms::Sweep(
+  vtkOpenGLRenderWindow* window, bool positional, int entering, std::string& why)
+{
+  std::unique_ptr<vtkOpenGLQuadHelper>& sweep = this->Sweeps[(positional ? 3 : 0) + entering];
+  if (!sweep)
+  {
+    const std::string defines = "#define ST_SWEEP_POSITIONAL " +
+      std::to_string(positional ? 1 : 0) + "\n#define ST_SWEEP_ENTERING " +
+      std::to_string(entering) + "\n";
+    sweep.reset(new vtkOpenGLQuadHelper(window,
+      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(),
+      WithCommon(scatterer_transport_sweep, this->CreatedVariant + defines).c_str(), ""));
+  }
+  if (!sweep->Program)
+  {
+    why = "the transport shaders failed to compile on this OpenGL implementation";
+    sweep.reset();
+    return nullptr;
+  }
+  return sweep.get();
 }
 
 void TransportPrograms::ReleaseGraphicsResources(vtkWindow* window)
@@ -122,6 +148,14 @@ void TransportPrograms::ReleaseGraphicsResources(vtkWindow* window)
     {
       (*q)->ReleaseGraphicsResources(window);
       q->reset();
+    }
+  }
+  for (auto& sweep : this->Sweeps)
+  {
+    if (sweep)
+    {
+      sweep->ReleaseGraphicsResources(window);
+      sweep.reset();
     }
   }
 }
@@ -169,11 +203,8 @@ void SetCommonUniforms(vtkShaderProgram* program, const TransportGrid& grid,
   }
   program->SetUniform4fv("st_clipPlanes", 6, clip);
   program->SetUniformi("st_clipCount", planes);
-  program->SetUniformi("st_masked", in.Mask && !in.LabelMask ? 1 : 0);
-  program->SetUniformi("st_labelMasked", in.Mask && in.LabelMask ? 1 : 0);
   program->SetUniformf("st_maskBlend", in.MaskBlend);
   program->SetUniformf("st_mediumRows", static_cast<float>(std::max(1, in.MediumRows)));
-  program->SetUniformi("st_cropping", in.Cropping ? 1 : 0);
   program->SetUniformi("st_cropFlags", in.CropFlags);
   program->SetUniform3f("st_cropMin", in.CropMin);
   program->SetUniform3f("st_cropMax", in.CropMax);
@@ -250,7 +281,7 @@ ScopedVolume::ScopedVolume(vtkShaderProgram* program, const vtkScattererTranspor
   }
   else
   {
-    // Unused (st_masked 0), but a sampler keeps its unit between draws, and a
+    // Unused (ST_NO_MASK), but a sampler keeps its unit between draws, and a
     // sampler3D left on a unit where a 2D texture is bound now makes the draw invalid
     // (GL_INVALID_OPERATION: nothing is drawn). The volume's unit is always 3D.
     program->SetUniformi("st_mask", this->Volume->GetTextureUnit());

@@ -38,7 +38,6 @@ struct TransportPrograms
   std::unique_ptr<vtkOpenGLQuadHelper> Medium;  ///< pass 0a: what no light changes, fine grid
   std::unique_ptr<vtkOpenGLQuadHelper> Coarsen; ///< pass 0b: medium and occlusion, coarse grid
   std::unique_ptr<vtkOpenGLQuadHelper> Count;   ///< pass 0c: which gather each layer needs
-  std::unique_ptr<vtkOpenGLQuadHelper> Sweep;   ///< pass 1: transmittance, slice by slice
   std::unique_ptr<vtkOpenGLQuadHelper> Arrive;  ///< pass 2a: a light's arriving light
   /// pass 2b: template in-scattering, per GatherVariant
   std::unique_ptr<vtkOpenGLQuadHelper> Gather[GatherVariants];
@@ -46,6 +45,11 @@ struct TransportPrograms
   std::unique_ptr<vtkOpenGLQuadHelper> Diffuse; ///< pass 3b: one Jacobi iteration
   std::unique_ptr<vtkOpenGLQuadHelper> Combine; ///< pass 4: coarse light added to the fine
   std::string CreatedVariant;                   ///< the defines they were compiled with
+
+  /// The kinds of sweep program (ST_SWEEP_POSITIONAL, ST_SWEEP_ENTERING in
+  /// scatterer_transport_sweep.glsl): directional or positional light, times no depth in
+  /// front, a directional map of it or a positional one.
+  static constexpr int kSweepKinds = 6;
 
   TransportPrograms();
   ~TransportPrograms();
@@ -56,8 +60,17 @@ struct TransportPrograms
   /** True when the programs exist for @p variant. */
   bool IsCreated(const std::string& variant) const
   {
-    return this->Sweep != nullptr && this->CreatedVariant == variant;
+    return this->Medium != nullptr && this->CreatedVariant == variant;
   }
+
+  /**
+   * Pass 1's program for a light that is @p positional, with the depth in front of a
+   * piece @p entering (0 none, 1 a directional map, 2 a positional one), compiled the
+   * first time one is asked for; null with @p why set if the OpenGL implementation
+   * refuses it.
+   */
+  vtkOpenGLQuadHelper* Sweep(
+    vtkOpenGLRenderWindow* window, bool positional, int entering, std::string& why);
 
   /** Compiles the programs for @p variant in @p window (releasing any others); false
    * with @p why set (and none kept) if the OpenGL implementation refuses one. */
@@ -66,7 +79,8 @@ struct TransportPrograms
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:
-  std::array<std::unique_ptr<vtkOpenGLQuadHelper>*, 11> All();
+  std::array<std::unique_ptr<vtkOpenGLQuadHelper>*, 10> All();
+  std::unique_ptr<vtkOpenGLQuadHelper> Sweeps[kSweepKinds]; ///< pass 1, per kind, when first used
 };
 
 /** Makes @p quad's program current in @p window and returns it. */

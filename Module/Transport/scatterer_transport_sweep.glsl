@@ -51,10 +51,8 @@ uniform mat3 st_worldToGrid;       // world vector -> grid-index vector
 uniform mat3 st_gridToWorld;       // grid-index vector -> world vector
 uniform vec3 st_lightToward;       // directional: unit vector toward the light (world)
 uniform vec3 st_lightPosition;     // positional: world position
-uniform int st_lightPositional;
 uniform int st_substeps;           // extinction samples per step (volume voxels per texel)
 uniform mat4 st_texToIndex;        // volume texture coordinates -> structured index
-uniform int st_entering;           // 0: none; 1: directional map; 2: positional (octahedral)
 uniform sampler2D st_enteringDepth;
 uniform vec3 st_enteringLight;     // positional: the light (index space)
 uniform vec3 st_enteringU;         // directional: the map plane's basis (index space)
@@ -62,6 +60,9 @@ uniform vec3 st_enteringV;
 uniform vec2 st_enteringLo;        // directional: the map's corner on the plane
 uniform float st_enteringSide;     // directional: the map's side (index units)
 
+// The program comes in one variant per kind of light (ScattererTransportPrograms.cxx):
+// ST_SWEEP_POSITIONAL (0: directional, 1: positional) and ST_SWEEP_ENTERING (the depth
+// in front of a piece: 0 none, 1 a directional map, 2 a positional (octahedral) one).
 // Mirrors scatterer::lightspace::Map::coordinate.
 vec2 st_octahedral(vec3 d)
 {
@@ -77,21 +78,17 @@ vec2 st_octahedral(vec3 d)
 // The optical depth in front of this piece on the light's line through index i.
 float st_depthInFront(vec3 i)
 {
-  if (st_entering == 0)
-  {
-    return 0.0;
-  }
-  vec2 c;
-  if (st_entering == 2)
-  {
-    vec3 d = i - st_enteringLight;
-    c = st_octahedral(length(d) > 0.0 ? normalize(d) : vec3(0.0, 0.0, 1.0)) * 0.5 + vec2(0.5);
-  }
-  else
-  {
-    c = (vec2(dot(i, st_enteringU), dot(i, st_enteringV)) - st_enteringLo) / st_enteringSide;
-  }
+#if ST_SWEEP_ENTERING == 0
+  return 0.0;
+#else
+#if ST_SWEEP_ENTERING == 2
+  vec3 d = i - st_enteringLight;
+  vec2 c = st_octahedral(length(d) > 0.0 ? normalize(d) : vec3(0.0, 0.0, 1.0)) * 0.5 + vec2(0.5);
+#else
+  vec2 c = (vec2(dot(i, st_enteringU), dot(i, st_enteringV)) - st_enteringLo) / st_enteringSide;
+#endif
   return texture(st_enteringDepth, c).r;
+#endif
 }
 
 void main()
@@ -102,12 +99,12 @@ void main()
   float Tmean = 1.0; // over the texel along the line: what the texture holds
   if (st_hasPrevious != 0)
   {
+#if ST_SWEEP_POSITIONAL
+    vec4 p = st_texToWorld * vec4(st_gridToTexture(j), 1.0);
+    vec3 toward = st_lightPosition - p.xyz / p.w;
+#else
     vec3 toward = st_lightToward;
-    if (st_lightPositional != 0)
-    {
-      vec4 p = st_texToWorld * vec4(st_gridToTexture(j), 1.0);
-      toward = st_lightPosition - p.xyz / p.w;
-    }
+#endif
     vec3 ds = st_toSweep * (st_worldToGrid * toward);
     // One slice toward the light; a light nearly in this slice's plane would
     // shift sideways without bound: at most 4 texels per step.
