@@ -198,12 +198,12 @@ void GatherLight(const TransportPass& pass, const SweepPlan& plan)
   // Each layer by the cheapest variant that serves all its texels (pass 0c).
   for (int variant = 0; variant < GatherVariants; ++variant)
   {
-    const auto drawn = [&](int z)
-    { return z < static_cast<int>(layerGathers.size()) && layerGathers[z] == variant; };
-    if (std::none_of(layerGathers.begin(), layerGathers.end(), [&](int v) { return v == variant; }))
+    if (std::find(layerGathers.begin(), layerGathers.end(), variant) == layerGathers.end())
     {
       continue;
     }
+    const auto drawn = [&](int z)
+    { return z < static_cast<int>(layerGathers.size()) && layerGathers[z] == variant; };
     vtkOpenGLQuadHelper* quad = pass.Programs.Gather[variant].get();
     vtkShaderProgram* program = UseProgram(pass.Window, quad);
     SetCommonUniforms(program, pass.Grid, in);
