@@ -160,6 +160,26 @@ struct LitSlab
     this->Scene.SetDirectional(x, y, z);
   }
 };
+
+// The slab z in [8, 15] of a 24^3 volume, opacity 0.3 per unit, lit from +z, rendered
+// once in the shared window, where it stays (until the end) for the frames a test
+// renders one by one.
+struct SlabInWindow
+{
+  TransportScene Scene;
+  vtkRenderWindow* Window;
+  vtkScattererTransportVolume* Transport;
+  SlabInWindow()
+    : Scene(MakeVolume(24, 1.0, Slab(8, 15)), 0.3)
+    , Window(scatterer_testing::SharedWindow())
+    , Transport(Scene.Mapper->GetTransportVolume())
+  {
+    this->Scene.SetDirectional(0, 0, 1);
+    this->Window->AddRenderer(this->Scene.Renderer);
+    this->Window->Render();
+  }
+  ~SlabInWindow() { this->Window->RemoveRenderer(this->Scene.Renderer); }
+};
 }
 
 TEST(TransportVolume, SlabAxisAlignedLightIsBeerLambert)
@@ -426,14 +446,10 @@ TEST(TransportVolume, ClippedCroppedOrMaskedOccluderCastsNoShadow)
 
 TEST(TransportVolume, RebuiltOnlyWhenWhatItDependsOnChanges)
 {
-  const int n = 24;
-  auto image = MakeVolume(n, 1.0, Slab(8, 15));
-  TransportScene scene(image, 0.3);
-  scene.SetDirectional(0, 0, 1);
-  vtkRenderWindow* window = scatterer_testing::SharedWindow();
-  window->AddRenderer(scene.Renderer);
-  vtkScattererTransportVolume* transport = scene.Mapper->GetTransportVolume();
-  window->Render();
+  SlabInWindow slab;
+  TransportScene& scene = slab.Scene;
+  vtkRenderWindow* window = slab.Window;
+  vtkScattererTransportVolume* transport = slab.Transport;
   const int first = transport->GetBuildCount();
   ASSERT_GE(first, 1);
   // The camera moves under a scene light: nothing to rebuild.
@@ -448,7 +464,6 @@ TEST(TransportVolume, RebuiltOnlyWhenWhatItDependsOnChanges)
   scene.SetDirectional(1, 0, 1);
   window->Render();
   EXPECT_EQ(transport->GetBuildCount(), first + 2) << "a light move was not seen";
-  window->RemoveRenderer(scene.Renderer);
 }
 
 // What no light changes (each texel's scattering coefficient and gather, the coarse
@@ -457,33 +472,29 @@ TEST(TransportVolume, RebuiltOnlyWhenWhatItDependsOnChanges)
 // first build does.
 TEST(TransportVolume, MediumPassesRunWhenTheMediumChangesNotWhenALightMoves)
 {
-  const int n = 24;
-  auto image = MakeVolume(n, 1.0, Slab(8, 15));
   const auto edit = [](TransportScene& scene)
   {
     scene.Property->GetScalarOpacity()->AddPoint(200, 0.6);
     scene.Property->GetRGBTransferFunction()->AddRGBPoint(200, 1.0, 0.4, 0.2);
     scene.SetDirectional(1, 0, 1);
   };
-  TransportScene scene(image, 0.3);
-  scene.SetDirectional(0, 0, 1);
-  vtkRenderWindow* window = scatterer_testing::SharedWindow();
-  window->AddRenderer(scene.Renderer);
-  vtkScattererTransportVolume* transport = scene.Mapper->GetTransportVolume();
-  window->Render();
-  const int first = transport->GetMediumBuildCount();
-  ASSERT_GE(first, 1);
-  scene.SetDirectional(0, 1, 1);
-  window->Render();
-  EXPECT_EQ(transport->GetMediumBuildCount(), first) << "a light move drew the medium again";
-  edit(scene);
-  window->Render();
-  EXPECT_EQ(transport->GetMediumBuildCount(), first + 1) << "a transfer function edit was not seen";
-  const std::vector<float> edited =
-    transport->ReadLight(vtkOpenGLRenderWindow::SafeDownCast(window));
-  window->RemoveRenderer(scene.Renderer);
+  std::vector<float> edited;
+  {
+    SlabInWindow slab;
+    vtkScattererTransportVolume* transport = slab.Transport;
+    const int first = transport->GetMediumBuildCount();
+    ASSERT_GE(first, 1);
+    slab.Scene.SetDirectional(0, 1, 1);
+    slab.Window->Render();
+    EXPECT_EQ(transport->GetMediumBuildCount(), first) << "a light move drew the medium again";
+    edit(slab.Scene);
+    slab.Window->Render();
+    EXPECT_EQ(transport->GetMediumBuildCount(), first + 1)
+      << "a transfer function edit was not seen";
+    edited = transport->ReadLight(vtkOpenGLRenderWindow::SafeDownCast(slab.Window));
+  }
 
-  TransportScene fresh(image, 0.3);
+  TransportScene fresh(MakeVolume(24, 1.0, Slab(8, 15)), 0.3);
   edit(fresh);
   const std::vector<float> expected = fresh.ReceivedLight();
   ASSERT_EQ(edited.size(), expected.size());
