@@ -4,7 +4,7 @@
 //   ScattererTransportKey              whether the inputs changed since the last build
 //   ScattererTransportGrid             where the grid lies, how a light is swept (CPU only)
 //   ScattererTransportPrograms         the pass programs and the uniforms they share
-//   ScattererTransportTables           the medium and material tables, uploaded per build
+//   ScattererTransportTables           the medium and material tables, uploaded with the medium
 //   ScattererTransportTextures         the render targets and their allocation
 //   ScattererTransportMediumPasses     what no light changes, when the medium does
 //   ScattererTransportLightPasses      per light its sweep and arriving light; one gather
@@ -97,7 +97,10 @@ bool vtkScattererTransportVolume::vtkInternals::RunPasses(const Inputs& in, std:
   bool ok = true;
   if (mediumChanged)
   {
+    // The tables depend on what the medium key covers (TablesVersion): uploaded with the
+    // medium's passes, not on every light change.
     this->HasMedium = false;
+    this->Tables.Upload(this->Context, in);
     ok = scatterer_gpu::BuildMediumTextures(pass, why);
     ++this->MediumBuilds;
     this->HasMedium = ok;
@@ -200,8 +203,8 @@ bool vtkScattererTransportVolume::Update(
   s.Context = window;
   s.Last = in;
 
-  // The stages: place the grid, compile the programs (once), upload the tables,
-  // allocate the light texture, run the passes.
+  // The stages: place the grid, compile the programs (once), allocate the light
+  // texture, run the passes (the tables are uploaded with the medium's).
   // The grid lies on the volume texture, or on the box that holds a vtkMultiVolume's parts.
   const bool box = !in.Parts.empty();
   const int volumeDims[3] = { box ? in.BoxTexels[0] : static_cast<int>(in.Volume->GetWidth()),
@@ -221,7 +224,6 @@ bool vtkScattererTransportVolume::Update(
     }
     s.Framebuffer->SetContext(window);
   }
-  s.Tables.Upload(window, in);
   if (!s.Textures.AllocateFine(window, s.Grid.Dims, why))
   {
     return false;
