@@ -3,6 +3,7 @@
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLVertexArrayObject.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
@@ -38,6 +39,22 @@ void AttachLayer(unsigned int index, vtkTextureObject* texture, int layer)
     GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + index, texture->GetHandle(), 0, layer);
 }
 
+void AttachLayered(unsigned int index, vtkTextureObject* texture)
+{
+  glFramebufferTexture(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + index, texture->GetHandle(), 0);
+}
+
+// vtkOpenGLQuadHelper::Render draws its quad as a 4-vertex triangle strip; this draws
+// @p count instances of it, which the layered geometry shader sends to consecutive
+// layers.
+void DrawInstances(vtkOpenGLQuadHelper* quad, vtkShaderProgram* program, int first, int count)
+{
+  program->SetUniformi("st_firstLayer", first);
+  quad->VAO->Bind();
+  glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, count);
+  quad->VAO->Release();
+}
+
 void Attach2D(unsigned int index, vtkTextureObject* texture)
 {
   glFramebufferTexture2D(
@@ -64,25 +81,26 @@ void DrawLayersWhere(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLQuadHelpe
   vtkShaderProgram* program, std::initializer_list<vtkTextureObject*> targets, int layers,
   const std::function<bool(int)>& draw)
 {
-  bool first = true;
-  for (int z = 0; z < layers; ++z)
+  unsigned int index = 0;
+  for (vtkTextureObject* target : targets)
+  {
+    AttachLayered(index++, target);
+  }
+  framebuffer->ActivateDrawBuffers(index);
+  for (int z = 0; z < layers;)
   {
     if (!draw(z))
     {
+      ++z;
       continue;
     }
-    unsigned int index = 0;
-    for (vtkTextureObject* target : targets)
+    int end = z + 1;
+    while (end < layers && draw(end))
     {
-      AttachLayer(index++, target, z);
+      ++end;
     }
-    if (first)
-    {
-      framebuffer->ActivateDrawBuffers(index);
-      first = false;
-    }
-    program->SetUniformf("st_layer", static_cast<float>(z));
-    quad->Render();
+    DrawInstances(quad, program, z, end - z);
+    z = end;
   }
   DetachAll(framebuffer);
 }

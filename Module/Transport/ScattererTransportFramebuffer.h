@@ -1,6 +1,7 @@
 // The framebuffer side of the light transport passes: the GL state they run in, and
-// drawing a full-screen quad into each layer of 3D textures (a fragment pass renders
-// one 2D layer per draw).
+// drawing a full-screen quad into the layers of 3D textures: all the layers of a pass
+// in one instanced draw (layered rendering, scatterer_transport_layers_gs.glsl), except
+// the sweep, which draws one slice after another.
 #ifndef ScattererTransportFramebuffer_h
 #define ScattererTransportFramebuffer_h
 
@@ -40,6 +41,14 @@ private:
  * draw framebuffer. */
 void AttachLayer(unsigned int index, vtkTextureObject* texture, int layer);
 
+/** Attaches all the layers of 3D @p texture as colour attachment @p index of the bound
+ * draw framebuffer (layered: a draw's gl_Layer chooses the layer). */
+void AttachLayered(unsigned int index, vtkTextureObject* texture);
+
+/** Draws @p quad (a program with the layered geometry shader) into layers
+ * [@p first, @p first + @p count) of the layered attachments: one draw call. */
+void DrawInstances(vtkOpenGLQuadHelper* quad, vtkShaderProgram* program, int first, int count);
+
 /** Attaches 2D @p texture as colour attachment @p index of the bound draw framebuffer. */
 void Attach2D(unsigned int index, vtkTextureObject* texture);
 
@@ -47,13 +56,14 @@ void Attach2D(unsigned int index, vtkTextureObject* texture);
  * passes and the ray caster). */
 void DetachAll(vtkOpenGLFramebufferObject* framebuffer);
 
-/** Draws @p quad once per layer of the 3D @p targets (all of the same size), each
- * layer attached as a colour attachment in order; @p program gets the layer as
- * st_layer. Detaches them after. */
+/** Draws @p quad into every layer of the 3D @p targets (all of the same size, attached
+ * layered as colour attachments in order) in one draw call; @p program gets the layer
+ * as st_layer. Detaches them after. */
 void DrawLayers(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLQuadHelper* quad,
   vtkShaderProgram* program, std::initializer_list<vtkTextureObject*> targets, int layers);
 
-/** DrawLayers, for the layers @p z for which @p draw(z) holds. */
+/** DrawLayers, for the layers @p z for which @p draw(z) holds: one draw call per run of
+ * consecutive such layers. */
 void DrawLayersWhere(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLQuadHelper* quad,
   vtkShaderProgram* program, std::initializer_list<vtkTextureObject*> targets, int layers,
   const std::function<bool(int)>& draw);

@@ -65,16 +65,15 @@ std::vector<int> CountLayerGathers(const TransportPass& pass)
   const float atLeast[] = { 0.0f, static_cast<float>(kMaxMaterials) };
   std::vector<GLuint> queries(2 * static_cast<size_t>(layers));
   glGenQueries(static_cast<GLsizei>(queries.size()), queries.data());
-  AttachLayer(0, pass.Textures.Light, 0);
+  AttachLayered(0, pass.Textures.Light);
   pass.Framebuffer->ActivateDrawBuffers(1);
   for (int v = 0; v < 2; ++v)
   {
     program->SetUniformf("st_atLeast", atLeast[v]);
     for (int z = 0; z < layers; ++z)
     {
-      program->SetUniformf("st_layer", static_cast<float>(z));
       glBeginQuery(GL_SAMPLES_PASSED, queries[v * layers + z]);
-      pass.Programs.Count->Render();
+      DrawInstances(pass.Programs.Count.get(), program, z, 1);
       glEndQuery(GL_SAMPLES_PASSED);
     }
   }

@@ -21,6 +21,8 @@
 #include "scatterer_transport_count.h"
 #include "scatterer_transport_diffuse.h"
 #include "scatterer_transport_gather.h"
+#include "scatterer_transport_layers_gs.h"
+#include "scatterer_transport_layers_vs.h"
 #include "scatterer_transport_materials.h"
 #include "scatterer_transport_medium.h"
 #include "scatterer_transport_source.h"
@@ -78,11 +80,11 @@ bool TransportPrograms::Create(
 {
   this->ReleaseGraphicsResources(window);
   this->CreatedVariant = variant;
-  const std::string vs = vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader();
+  // Every pass but the sweep draws whole 3D textures, all their layers in one draw.
   auto quad = [&](const std::string& fs)
   {
-    return std::unique_ptr<vtkOpenGLQuadHelper>(
-      new vtkOpenGLQuadHelper(window, vs.c_str(), fs.c_str(), ""));
+    return std::unique_ptr<vtkOpenGLQuadHelper>(new vtkOpenGLQuadHelper(
+      window, scatterer_transport_layers_vs, fs.c_str(), scatterer_transport_layers_gs));
   };
   this->Medium = quad(WithCommon(scatterer_transport_medium, variant));
   this->Coarsen = quad(WithCommon(scatterer_transport_coarsen, variant));

@@ -3,14 +3,14 @@
 //============================================================================
 // Light transport volume, pass 2a: one light's share of the light arriving
 // unscattered, E_l a_l T_l (scatterer_transport_arriving.glsl), at each texel of the
-// grid and of one texel more on each side (one layer per draw, one draw per light
-// and layer, the lights added up by blending). Every light but a directional one
+// grid and of one texel more on each side (all layers in one draw per light, the lights
+// added up by blending). Every light but a directional one
 // read directly (ST_DIRECT_LIGHT) passes here.
 //============================================================================
 //VTK::Transport::Common
 in vec2 texCoord;
 uniform sampler3D st_transmittance;  // T_l, sweep order (st_toSweep); its border reads 1
-uniform float st_layer;
+flat in float st_layer;          // this layer (scatterer_transport_layers_gs.glsl)
 uniform vec3 st_lightColor;
 uniform vec3 st_lightPosition;
 uniform vec3 st_lightFocalDirection; // positional: unit vector from the light to its focal point

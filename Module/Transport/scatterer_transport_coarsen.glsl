@@ -2,7 +2,7 @@
 //VTK::Output::Dec
 //============================================================================
 // Light transport volume, pass 0b: the medium on the diffusion's coarse grid and the
-// ambient occlusion of each coarse texel (one layer per draw). Like pass 0a it runs
+// ambient occlusion of each coarse texel (all layers in one draw). Like pass 0a it runs
 // when the medium changes, not when a light moves. A coarse texel covers a block of
 // st_block^3 fine texels (st_block: 4 or 2, so that a coarse texel spans about 4
 // volume voxels, or 2 fine texels at TransportScale 3 and above): its medium (albedo,
@@ -21,7 +21,7 @@
 //============================================================================
 //VTK::Transport::Common
 in vec2 texCoord;
-uniform float st_layer;
+flat in float st_layer;          // this layer (scatterer_transport_layers_gs.glsl)
 uniform vec3 st_coarseDims;
 uniform vec3 st_coarseToGrid;      // coarse texel c covers fine positions c * st_block + st_coarseToGrid + [0, st_block)
 uniform int st_block;

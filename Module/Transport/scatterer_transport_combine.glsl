@@ -11,7 +11,7 @@ in vec2 texCoord;
 uniform sampler3D st_fluence;      // coarse grid, rgb (unused when st_strength is 0)
 uniform sampler3D st_occlusion;    // coarse grid: the ambient light's transmittance (pass 0b)
 uniform vec3 st_ambient;
-uniform float st_layer;
+flat in float st_layer;          // this layer (scatterer_transport_layers_gs.glsl)
 uniform vec3 st_gridDims;
 uniform vec3 st_coarseDims;
 uniform vec3 st_coarseToGrid;

@@ -9,7 +9,7 @@
 in vec2 texCoord;
 uniform sampler3D st_fineMedium;
 uniform vec3 st_gridDims;
-uniform float st_layer;
+flat in float st_layer;          // this layer (scatterer_transport_layers_gs.glsl)
 uniform float st_atLeast;
 
 void main()

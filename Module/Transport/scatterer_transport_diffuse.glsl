@@ -1,8 +1,8 @@
 //VTK::System::Dec
 //VTK::Output::Dec
 //============================================================================
-// Light transport volume, pass 3b: multiple scattering by diffusion (one layer
-// per draw, Jacobi sweeps on a coarse grid of about 4 voxels; after vpt,
+// Light transport volume, pass 3b: multiple scattering by diffusion (all layers
+// in one draw, Jacobi sweeps on a coarse grid of about 4 voxels; after vpt,
 // Zbontar & Lesar, which carries multiple scattering by diffusion).
 //
 // The diffusion approximation of the light scattered more than once, per colour
@@ -22,7 +22,7 @@ uniform sampler3D st_coarseMedium; // coarse grid: rgb albedo, a sigma_t
 uniform sampler3D st_coarseSource; // coarse grid: rgb the light scattered once
 uniform sampler3D st_previous;     // coarse grid: phi of the last iteration (rgb)
 uniform int st_first;              // 1: no previous iteration (phi = 0)
-uniform float st_layer;
+flat in float st_layer;          // this layer (scatterer_transport_layers_gs.glsl)
 uniform vec3 st_coarseDims;
 uniform vec3 st_h;                 // coarse texel size along each axis, world units
 

@@ -1,7 +1,7 @@
 //VTK::System::Dec
 //VTK::Output::Dec
 //============================================================================
-// Light transport volume, pass 2b: template in-scattering (one layer per draw, once
+// Light transport volume, pass 2b: template in-scattering (layers in one draw, once
 // for all lights).
 //
 // The light a point p of material m receives, scattered once, from the light arriving
@@ -33,7 +33,7 @@
 //VTK::Transport::Arriving
 in vec2 texCoord;
 uniform sampler3D st_fineMedium;   // pass 0a: a = -1 (none), m, or m + ST_MIXED
-uniform float st_layer;
+flat in float st_layer;          // this layer (scatterer_transport_layers_gs.glsl)
 
 void main()
 {

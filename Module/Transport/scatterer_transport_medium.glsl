@@ -2,7 +2,7 @@
 //VTK::Output::Dec
 //============================================================================
 // Light transport volume, pass 0a: what each fine texel holds that no light changes
-// (one layer per draw). It runs when the medium does (the volume, its transfer
+// (all layers in one draw). It runs when the medium does (the volume, its transfer
 // functions, clipping, cropping, the materials, the grid), not when a light moves:
 // an orbit under the headlight or ParaView's light kit moves the lights every frame.
 // - rgb: the texel's scattering coefficient as the multiple-scattering source takes
@@ -21,7 +21,7 @@
 //VTK::Transport::Common
 //VTK::Transport::Materials
 in vec2 texCoord;
-uniform float st_layer;
+flat in float st_layer;          // this layer (scatterer_transport_layers_gs.glsl)
 uniform float st_fineSize; // a fine texel's mean size, world units
 
 void main()
