@@ -43,6 +43,8 @@ struct MaterialSet
   int Dropped = 0; ///< derived intervals beyond the material limit (left unlit)
 };
 
+/** Materials a volume is split into at most: the one home of the limit, which the shaders
+ * get as ST_MAX_MATERIALS (ScattererShaderComposer, ScattererTransportPrograms). */
 constexpr int kMaxMaterials = 8;
 
 /**

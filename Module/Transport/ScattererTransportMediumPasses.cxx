@@ -61,8 +61,8 @@ std::vector<int> CountLayerGathers(const TransportPass& pass)
   state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   state->vtkglViewport(0, 0, pass.Grid.Dims[0], pass.Grid.Dims[1]);
   // The least gather value of each variant above the first (ST_MIXED is
-  // ST_MAX_MATERIALS, kMaxMaterials here).
-  const float atLeast[] = { 0.0f, static_cast<float>(kMaxMaterials) };
+  // ST_MAX_MATERIALS, scatterer_scene::kMaxMaterials here).
+  const float atLeast[] = { 0.0f, static_cast<float>(scatterer_scene::kMaxMaterials) };
   std::vector<GLuint> queries(2 * static_cast<size_t>(layers));
   glGenQueries(static_cast<GLsizei>(queries.size()), queries.data());
   AttachLayered(0, pass.Textures.Light);

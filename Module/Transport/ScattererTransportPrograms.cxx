@@ -1,5 +1,6 @@
 #include "ScattererTransportPrograms.h"
 
+#include "ScattererSceneMaterials.h"
 #include "ScattererTransportGrid.h"
 #include "ScattererTransportLightPasses.h"
 
@@ -65,6 +66,7 @@ std::string TransportPrograms::Variant(const vtkScattererTransportVolume::Inputs
     !in.Mask ? 0 : (in.LabelMask ? 2 : 1); // ST_NO_MASK, ST_BINARY_MASK, ST_LABEL_MASK
   return "#define ST_COMPONENT_MODE " + std::to_string(in.ComponentMode) +
     "\n#define ST_MATERIAL_COMPONENT " + std::to_string(in.MaterialComponent) +
+    "\n#define ST_MAX_MATERIALS " + std::to_string(scatterer_scene::kMaxMaterials) +
     "\n#define ST_MASK " + std::to_string(mask) + "\n#define ST_CROPPING " +
     std::to_string(in.Cropping ? 1 : 0) + "\n#define ST_PARTS " +
     std::to_string(std::max<size_t>(1, in.Parts.size())) + "\n#define ST_DIRECT_LIGHT " +

@@ -57,6 +57,7 @@ void SetMaterialUniforms(vtkShaderProgram* program, const vtkScattererTransportV
   program->SetUniformi("st_materialCount", materials);
   // The ratio tables of the inputs are materials x materials; the shader's have
   // kMaxMaterials columns.
+  using scatterer_scene::kMaxMaterials;
   float colors[kMaxMaterials][3] = {};
   float speed[kMaxMaterials * kMaxMaterials] = {};
   float ratio[kMaxMaterials * kMaxMaterials] = {};

@@ -5,6 +5,7 @@
 #ifndef ScattererTransportTables_h
 #define ScattererTransportTables_h
 
+#include "ScattererSceneMaterials.h"     // for kMaxMaterials
 #include "vtkScattererTransportVolume.h" // for Inputs
 #include "vtkSmartPointer.h"
 
@@ -15,9 +16,6 @@ class vtkWindow;
 
 namespace scatterer_gpu
 {
-/** Materials the gather distinguishes (ST_MAX_MATERIALS in scatterer_transport_gather.glsl). */
-constexpr int kMaxMaterials = 8;
-
 /** The table textures, uploaded again for every build. */
 struct TransportTables
 {
@@ -33,7 +31,8 @@ struct TransportTables
 };
 
 /** The gather's per-material uniforms: colours, the speed and opacity ratio tables
- * (kMaxMaterials^2, row = the sample's material), the kernel width and the switches. */
+ * (scatterer_scene::kMaxMaterials^2, row = the sample's material), the kernel width and the
+ * switches. */
 void SetMaterialUniforms(
   vtkShaderProgram* program, const vtkScattererTransportVolume::Inputs& inputs);
 }

@@ -3,8 +3,8 @@
 // template gather (2b) read them: the material at a point, each material's photons
 // (Lee, Kwon, Shin 2016, Eq. 1-5) and the tables of section 3.3 (colour bleeding)
 // and 3.4 (Snell speed ratio, opacity ratio). Inserted after the common declarations.
+// ST_MAX_MATERIALS comes with the variant's defines (scatterer_scene::kMaxMaterials).
 //============================================================================
-#define ST_MAX_MATERIALS 8
 // The medium pass marks a texel some of whose photons land in another material by its
 // material + ST_MIXED (scatterer_transport_medium.glsl).
 #define ST_MIXED ST_MAX_MATERIALS
