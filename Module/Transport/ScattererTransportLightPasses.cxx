@@ -55,6 +55,7 @@ bool SweepTransmittance(const TransportPass& pass, const vtkScattererTransportVo
   program->SetUniform3f("st_lightToward", light.Toward);
   program->SetUniform3f("st_lightPosition", light.Position);
   program->SetUniformi("st_substeps", std::max(1, in.Downsample));
+  program->SetUniformf("st_sliceOrigin", static_cast<float>(pass.Grid.FirstIndex[plan.Axis]));
   SetIndexUniforms(program, in);
   vtkSmartPointer<vtkTextureObject> enteringTexture =
     NewTransportTexture(pass.Window, true, vtkTextureObject::ClampToEdge);

@@ -1,9 +1,11 @@
 // Inputs beyond one scalar with 1D transfer functions, lit through the transport volume
 // (issue 14): independent components (each with its own transfer functions), luminance +
 // alpha, RGBA, and a 2D transfer function. A ball above a plate, lit from above: with illumination
-// off the picture is the stock mapper's to the pixel; on, the ball's shadow darkens the plate, no
-// black hole appears where the stock mapper shows something, and a second frame is the same
-// picture. SCATTERER_TEST_IMAGES=<dir> writes the pictures there to look at.
+// off the picture is the stock mapper's to the pixel; on, the ball's shadow darkens the plate, and
+// a second frame is the same picture. Without the ball nothing shadows the plate, and no black hole
+// appears where the stock mapper shows something (with it, the ball's umbra is black: the ball is
+// opaque and the scene has no ambient light). SCATTERER_TEST_IMAGES=<dir> writes the pictures
+// there to look at.
 #include "Common/ScattererMapperSetup.h"
 #include "ScattererLitPictures.h"
 #include "ScattererRenderHarness.h"
@@ -53,13 +55,13 @@ bool InPlate(int, int, int k)
   return k >= 6 && k <= 10;
 }
 
-vtkSmartPointer<vtkImageData> Volume(Kind kind)
+vtkSmartPointer<vtkImageData> Volume(Kind kind, bool withBall = true)
 {
   const int components = kind == Kind::RGBA ? 4 : kind == Kind::Transfer2D ? 1 : 2;
   return scatterer_testing::MakeComponentVolume(N, components,
-    [kind](int i, int j, int k, int c) -> unsigned char
+    [kind, withBall](int i, int j, int k, int c) -> unsigned char
     {
-      const bool ball = InBall(i, j, k), plate = InPlate(i, j, k);
+      const bool ball = withBall && InBall(i, j, k), plate = InPlate(i, j, k);
       const unsigned char matter = ball || plate ? 200 : 0;
       switch (kind)
       {
@@ -134,9 +136,9 @@ void SetUpScene(vtkRenderer* renderer)
 
 using Pictures = scatterer_testing::LitPictures;
 
-Pictures Render(Kind kind)
+Pictures Render(Kind kind, bool withBall = true)
 {
-  const auto image = Volume(kind);
+  const auto image = Volume(kind, withBall);
   vtkNew<vtkVolumeProperty> property;
   property->SetScalarOpacityUnitDistance(1.0);
   if (kind == Kind::Independent)
@@ -183,7 +185,8 @@ Pictures Render(Kind kind)
   if (const char* dir = std::getenv("SCATTERER_TEST_IMAGES"))
   {
     const char* const names[] = { "independent", "luminance-alpha", "rgba", "transfer2d" };
-    const std::string base = std::string(dir) + "/lit-input-" + names[static_cast<int>(kind)];
+    const std::string base =
+      std::string(dir) + "/lit-input-" + names[static_cast<int>(kind)] + (withBall ? "" : "-open");
     const int* size = window->GetSize();
     scatterer_testing::SavePng(base + "-stock.png", out.Stock, size[0], size[1]);
     scatterer_testing::SavePng(base + "-lit.png", out.Lit, size[0], size[1]);
@@ -228,31 +231,37 @@ std::vector<unsigned char> RenderOneScalar(bool ours, int parts, std::string* fe
 void Check(Kind kind, const char* feature)
 {
   const Pictures p = Render(kind);
+  const Pictures open = Render(kind, false);
   EXPECT_EQ(scatterer_testing::MaxDifference(p.Stock, p.Off), 0)
     << "illumination off is not the stock picture";
   EXPECT_NE(p.Features.find(feature), std::string::npos) << p.Features;
   EXPECT_EQ(scatterer_testing::MaxDifference(p.Lit, p.LitAgain), 0)
     << "the lit picture changes from frame to frame";
   ASSERT_EQ(p.Stock.size(), p.Lit.size());
+  ASSERT_EQ(open.Stock.size(), open.Lit.size());
+  auto sum = [](const std::vector<unsigned char>& rgba, size_t q)
+  { return rgba[q] + rgba[q + 1] + rgba[q + 2]; };
   int shown = 0, holes = 0, shadowed = 0;
   double stockSum = 0.0, litSum = 0.0;
   for (size_t q = 0; q + 3 < p.Stock.size(); q += 4)
   {
-    const int s = p.Stock[q] + p.Stock[q + 1] + p.Stock[q + 2];
-    const int l = p.Lit[q] + p.Lit[q + 1] + p.Lit[q + 2];
+    const int s = sum(p.Stock, q), l = sum(p.Lit, q);
     if (s > 60)
     {
       ++shown;
       stockSum += s;
       litSum += l;
-      holes += l < 9 ? 1 : 0;
       shadowed += 2 * l < s ? 1 : 0;
+    }
+    if (sum(open.Stock, q) > 60)
+    {
+      holes += sum(open.Lit, q) < 9 ? 1 : 0;
     }
   }
   const double brightness = litSum / std::max(stockSum, 1.0);
-  std::printf("%s: stock shows %d pixels; lit: %d black, %d under half as bright, %.2fx as "
-              "bright overall\n",
-    feature, shown, holes, shadowed, brightness);
+  std::printf("%s: stock shows %d pixels; lit: %d under half as bright, %.2fx as bright "
+              "overall; without the ball %d black\n",
+    feature, shown, shadowed, brightness, holes);
   ASSERT_GT(shown, 2000) << "the scene is visible";
   EXPECT_LE(holes, shown / 100) << "black holes where the stock mapper shows the volume";
   EXPECT_GT(shadowed, 200) << "no shadow: the ball does not occlude the plate's light";
