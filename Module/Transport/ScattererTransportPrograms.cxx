@@ -37,6 +37,10 @@ namespace scatterer_gpu
 {
 namespace
 {
+// What Create and Sweep report when the OpenGL implementation refuses a program.
+const char* const kCompileFailed =
+  "the transport shaders failed to compile on this OpenGL implementation";
+
 // The common declarations, after the variant's defines, the materials' and the
 // arriving light's functions go where the pass has their tags.
 std::string WithCommon(const char* pass, const std::string& variant)
@@ -104,7 +108,7 @@ bool TransportPrograms::Create(
   {
     if (!(*q)->Program)
     {
-      why = "the transport shaders failed to compile on this OpenGL implementation";
+      why = kCompileFailed;
       for (auto* p : this->All())
       {
         p->reset();
@@ -137,7 +141,7 @@ vtkOpenGLQuadHelper* TransportPrograms::Sweep(
   }
   if (!sweep->Program)
   {
-    why = "the transport shaders failed to compile on this OpenGL implementation";
+    why = kCompileFailed;
     sweep.reset();
     return nullptr;
   }

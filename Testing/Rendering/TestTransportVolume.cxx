@@ -403,8 +403,8 @@ TEST(TransportVolume, SphereShadowFallsWhereGeometryPutsIt)
 
 TEST(TransportVolume, ShadowEdgeStaysSharpFarFromItsOccluder)
 {
-  // An opaque half plate (x < 31.5, z in [55.5, 57.5]) lit from above and sideways, a
-  // steps of 0.5 and 0.3 texels per slice. 46 slices below it (z = 10) the shadow's edge
+  // An opaque half plate (x < 31.5, z in [55.5, 57.5]) lit from above, with sideways
+  // steps a of 0.5 and 0.3 texels per slice. 46 slices below it (z = 10) the shadow's edge
   // is where geometry puts it, and sharp: from 10 % to 90 % of the light in under 3
   // texels, of which the plate's own thickness makes 2 a (its edge seen along the light).
   // Reading the slice before by bilinear interpolation at every step spread it like a
