@@ -5,8 +5,10 @@
 // vtkMultiVolume (the CT head and a ball above it), all in one process after a
 // warm-up frame each. Optionally on the CT head resampled to other
 // dimensions (the same physical extent). Writes a CSV row per configuration and a PNG
-// per configuration; the last column is the process's peak resident memory so far
-// (run one configuration per process with --only to compare memory).
+// per configuration. Column peak_rss_mib is the process's peak resident memory so far
+// (run one configuration per process with --only to compare memory); the last five are
+// the median time of each stage of the transport volume's rebuild (medium, sweeps,
+// arriving light, gather, diffusion), each waiting for the GPU.
 //
 //   scatterer-bench-render [--frames N] [--size WxH] [--out DIR] [--resample XxYxZ]
 //                          [--only a,b] [--append]
@@ -236,7 +238,9 @@ int main(int argc, char* argv[])
   if (header)
   {
     csv << "volume,config,mode,illumination,orbit,interactive,shader,frames,median_ms,min_ms,"
-           "max_ms,ratio_to_stock,build_ms,transport_dims,transport_gpu_mib,peak_rss_mib\n";
+           "max_ms,ratio_to_stock,build_ms,transport_dims,transport_gpu_mib,peak_rss_mib,"
+           "build_medium_ms,build_sweeps_ms,build_arriving_ms,build_gather_ms,"
+           "build_diffusion_ms\n";
   }
   double stockStill = 0.0, stockOrbit = 0.0, stockMulti = 0.0;
   for (const Config& config : Configs())
@@ -285,7 +289,8 @@ int main(int argc, char* argv[])
     window->SetDesiredUpdateRate(config.Interactive ? 20.0 : 0.0001);
     window->Render(); // warm-up: shader compile, uploads, transport volume
     window->WaitForCompletion();
-    std::vector<double> ms, buildMs;
+    // The build's stages per frame: medium, sweeps, arriving, gather, diffusion.
+    std::vector<double> ms, buildMs, stageMs[5];
     for (int f = 0; f < frames; ++f)
     {
       if (config.Orbit)
@@ -299,6 +304,14 @@ int main(int argc, char* argv[])
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
           .count());
       buildMs.push_back(st ? st->GetLastTransportBuildMilliseconds() : 0.0);
+      const auto stages = st ? st->GetTransportVolume()->GetLastBuildStageMilliseconds()
+                             : vtkScattererTransportVolume::StageMilliseconds();
+      int i = 0;
+      for (double stage :
+        { stages.Medium, stages.Sweeps, stages.Arriving, stages.Gather, stages.Diffusion })
+      {
+        stageMs[i++].push_back(stage);
+      }
     }
     const double median = Median(ms);
     if (config.Name == "stock_composite")
@@ -326,7 +339,12 @@ int main(int argc, char* argv[])
         << ",\"" << shader << "\"," << frames << ',' << median << ','
         << *std::min_element(ms.begin(), ms.end()) << ',' << *std::max_element(ms.begin(), ms.end())
         << ',' << (stock > 0 ? median / stock : 0.0) << ',' << Median(buildMs) << ',' << tname
-        << ',' << gpuMiB << ',' << PeakRssMiB() << "\n";
+        << ',' << gpuMiB << ',' << PeakRssMiB();
+    for (const auto& stage : stageMs)
+    {
+      csv << ',' << Median(stage);
+    }
+    csv << "\n";
     csv.flush();
     std::printf("%-12s %-40s median %8.1f ms  x%.2f  build %6.1f ms  rss %6.0f MiB  (%s)\n",
       volumeName.c_str(), config.Name.c_str(), median, stock > 0 ? median / stock : 0.0,

@@ -56,6 +56,7 @@ struct vtkScattererTransportVolume::vtkInternals
   bool HasMedium = false;
   int MediumBuilds = 0;
   double LastMs = 0.0;
+  StageMilliseconds LastStages;
   int Builds = 0;
   scatterer_gpu::SweepPlan CurrentPlan; // of the light whose transmittance the texture holds
   Inputs Last; // of the last build (ReadTransmittance sweeps again from it)
@@ -77,15 +78,31 @@ struct vtkScattererTransportVolume::vtkInternals
     return scatterer_gpu::SweepTransmittance(this->Pass(in), light, this->CurrentPlan, why);
   }
 
-  bool RunPasses(const Inputs& in, std::string& why);
+  /** Runs the passes of a build, timing its stages into LastStages (each waiting for
+   * the GPU if @p synchronous). */
+  bool RunPasses(const Inputs& in, bool synchronous, std::string& why);
   void Release(vtkWindow* window);
 };
 
 // The passes of one build: the medium's when it changed, per light its sweep and the
 // light it brings (the direct light last, read by the gather from its transmittance),
 // then the template gather of them all, then the diffusion.
-bool vtkScattererTransportVolume::vtkInternals::RunPasses(const Inputs& in, std::string& why)
+bool vtkScattererTransportVolume::vtkInternals::RunPasses(
+  const Inputs& in, bool synchronous, std::string& why)
 {
+  this->LastStages = StageMilliseconds();
+  auto lapStart = std::chrono::steady_clock::now();
+  // Adds the time since the last lap to @p stage.
+  const auto lap = [&](double& stage)
+  {
+    if (synchronous)
+    {
+      glFinish();
+    }
+    const auto now = std::chrono::steady_clock::now();
+    stage += std::chrono::duration<double, std::milli>(now - lapStart).count();
+    lapStart = now;
+  };
   scatterer_gpu::TransportPassState state(this->Context, this->Framebuffer);
   const scatterer_gpu::TransportPass pass = this->Pass(in);
   const int lights = static_cast<int>(in.Lights.size());
@@ -106,6 +123,7 @@ bool vtkScattererTransportVolume::vtkInternals::RunPasses(const Inputs& in, std:
     this->HasMedium = ok;
     this->MediumKey = mediumKey;
     this->MediumAllocations = this->Textures.MediumAllocations;
+    lap(this->LastStages.Medium);
   }
   // The lights of pass 2a need their texture; one directional light alone does not.
   if (ok && scatterer_gpu::HasArrivingLights(in))
@@ -121,6 +139,7 @@ bool vtkScattererTransportVolume::vtkInternals::RunPasses(const Inputs& in, std:
   {
     this->Context->GetState()->vtkglDisable(GL_BLEND);
     ok = this->Sweep(in, in.Lights[static_cast<size_t>(l)], why);
+    lap(this->LastStages.Sweeps);
     if (ok)
     {
       this->Progress.SweepDone(swept);
@@ -128,6 +147,7 @@ bool vtkScattererTransportVolume::vtkInternals::RunPasses(const Inputs& in, std:
       {
         scatterer_gpu::AddArrivingLight(
           pass, in.Lights[static_cast<size_t>(l)], this->CurrentPlan, swept == 0);
+        lap(this->LastStages.Arriving);
       }
       this->Progress.StepDone();
       ++swept;
@@ -147,10 +167,12 @@ bool vtkScattererTransportVolume::vtkInternals::RunPasses(const Inputs& in, std:
   if (ok)
   {
     scatterer_gpu::GatherLight(pass, this->CurrentPlan);
+    lap(this->LastStages.Gather);
   }
   ok = ok && scatterer_gpu::AddScatteredAndAmbientLight(pass, this->CurrentPlan, why);
   if (ok)
   {
+    lap(this->LastStages.Diffusion);
     this->Progress.BuildDone();
   }
   this->Progress.EndBuild();
@@ -197,6 +219,7 @@ bool vtkScattererTransportVolume::Update(
   if (s.IsCurrent(window, key))
   {
     s.LastMs = 0.0;
+    s.LastStages = StageMilliseconds();
     return true;
   }
   const auto start = std::chrono::steady_clock::now();
@@ -228,7 +251,7 @@ bool vtkScattererTransportVolume::Update(
   {
     return false;
   }
-  if (!s.RunPasses(in, why))
+  if (!s.RunPasses(in, this->SynchronousTiming, why))
   {
     s.HasKey = false;
     return false;
@@ -316,6 +339,12 @@ double vtkScattererTransportVolume::GetLastBuildMilliseconds() const
   return this->Internals->LastMs;
 }
 
+vtkScattererTransportVolume::StageMilliseconds
+vtkScattererTransportVolume::GetLastBuildStageMilliseconds() const
+{
+  return this->Internals->LastStages;
+}
+
 int vtkScattererTransportVolume::GetBuildCount() const
 {
   return this->Internals->Builds;
@@ -350,6 +379,10 @@ void vtkScattererTransportVolume::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Builds: " << s.Builds << "\n";
   os << indent << "MediumBuilds: " << s.MediumBuilds << "\n";
   os << indent << "LastBuildMilliseconds: " << s.LastMs << "\n";
+  const StageMilliseconds& t = s.LastStages;
+  os << indent << "LastBuildStageMilliseconds: medium " << t.Medium << ", sweeps " << t.Sweeps
+     << ", arriving " << t.Arriving << ", gather " << t.Gather << ", diffusion " << t.Diffusion
+     << "\n";
   os << indent << "GPUBytes: " << this->GetGPUBytes() << "\n";
   os << indent << "SynchronousTiming: " << (this->SynchronousTiming ? "On" : "Off") << "\n";
 }

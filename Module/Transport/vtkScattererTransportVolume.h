@@ -201,6 +201,23 @@ public:
   /** Milliseconds the last rebuild took, GPU work included (0: the frame reused it). */
   double GetLastBuildMilliseconds() const;
 
+  /** Where a rebuild's time goes, in milliseconds per stage. */
+  struct StageMilliseconds
+  {
+    double Medium = 0.0;    ///< what no light changes (only when the medium changed)
+    double Sweeps = 0.0;    ///< the lights' transmittance sweeps (pass 1)
+    double Arriving = 0.0;  ///< the light each but the direct light brings (pass 2a)
+    double Gather = 0.0;    ///< the template in-scattering (pass 2b)
+    double Diffusion = 0.0; ///< multiple scattering and the ambient term (passes 3a-4)
+  };
+
+  /**
+   * The stages of the last rebuild (all 0: the frame reused it). With SynchronousTiming
+   * each stage waits for the GPU (glFinish) and its time is its GPU work; without, it is
+   * the time to issue its passes.
+   */
+  StageMilliseconds GetLastBuildStageMilliseconds() const;
+
   /** Rebuilds so far (for tests and benchmarks). */
   int GetBuildCount() const;
 
@@ -239,9 +256,10 @@ public:
 
   ///@{
   /**
-   * Wait for the GPU to finish a build before timing it (glFinish), so that
-   * GetLastBuildMilliseconds includes the GPU work. For benchmarks; default off
-   * (off, it is the time to issue the passes).
+   * Wait for the GPU to finish a build, and each of its stages, before timing it
+   * (glFinish), so that GetLastBuildMilliseconds and GetLastBuildStageMilliseconds
+   * include the GPU work. For benchmarks; default off (off, they are the time to issue
+   * the passes).
    */
   vtkSetMacro(SynchronousTiming, bool);
   vtkGetMacro(SynchronousTiming, bool);

@@ -508,6 +508,54 @@ TEST(TransportVolume, RebuiltOnlyWhenWhatItDependsOnChanges)
   EXPECT_EQ(transport->GetBuildCount(), first + 2) << "a light move was not seen";
 }
 
+// The stages of a build (benchmarks report them: scatterer-bench-render's build_*_ms
+// columns) are the parts of its time: the medium's passes only when the medium changed,
+// the arriving light only for lights besides the direct one, and nothing for a frame
+// that reuses the build.
+TEST(TransportVolume, BuildStagesAreThePartsOfItsTime)
+{
+  SlabInWindow slab;
+  vtkScattererTransportVolume* transport = slab.Transport;
+  transport->SetSynchronousTiming(true);
+  const auto stagesOf = [&](const char* what)
+  {
+    slab.Window->Render();
+    const auto t = transport->GetLastBuildStageMilliseconds();
+    const double total = transport->GetLastBuildMilliseconds();
+    std::printf("%s: medium %.2f, sweeps %.2f, arriving %.2f, gather %.2f, diffusion %.2f of "
+                "%.2f ms\n",
+      what, t.Medium, t.Sweeps, t.Arriving, t.Gather, t.Diffusion, total);
+    const double sum = t.Medium + t.Sweeps + t.Arriving + t.Gather + t.Diffusion;
+    EXPECT_LE(sum, total) << what << ": the stages take longer than the build";
+    return t;
+  };
+  // A second light: the first passes through the arriving light, the second (the last
+  // directional one) is the direct light.
+  vtkNew<vtkLight> second;
+  second->SetLightTypeToSceneLight();
+  second->SetFocalPoint(11.5, 11.5, 11.5);
+  second->SetPosition(12.5, 11.5, 12.5);
+  slab.Scene.Renderer->AddLight(second);
+  slab.Scene.Property->GetScalarOpacity()->AddPoint(150, 0.05);
+  const auto medium = stagesOf("medium and two lights");
+  EXPECT_GT(medium.Medium, 0.0);
+  EXPECT_GT(medium.Sweeps, 0.0);
+  EXPECT_GT(medium.Arriving, 0.0);
+  EXPECT_GT(medium.Gather, 0.0);
+  EXPECT_GT(medium.Diffusion, 0.0);
+
+  slab.Scene.Renderer->RemoveLight(second);
+  slab.Scene.SetDirectional(1, 0, 1);
+  const auto light = stagesOf("one light moved");
+  EXPECT_EQ(light.Medium, 0.0) << "the medium did not change";
+  EXPECT_EQ(light.Arriving, 0.0) << "one directional light is read from its transmittance";
+  EXPECT_GT(light.Sweeps, 0.0);
+  EXPECT_GT(light.Diffusion, 0.0);
+
+  const auto reused = stagesOf("reused");
+  EXPECT_EQ(reused.Sweeps + reused.Gather + reused.Diffusion, 0.0) << "nothing was rebuilt";
+}
+
 // What no light changes (each texel's scattering coefficient and gather, the coarse
 // medium, the ambient occlusion: ScattererTransportMediumPasses) is drawn when the
 // medium changes, not when a light moves, and a build after a medium change lights as a
