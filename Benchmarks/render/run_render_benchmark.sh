@@ -2,8 +2,10 @@
 # Render benchmark on the real CT head scene (512x512) and on the CT head resampled
 # to 383x383x161 and 511x511x215: stock composite, stock Phong, the light transport
 # volume still and orbiting under the headlight (rebuilt every frame), the per-sample
-# photon test. Frame-time ratios are measured in one process per volume size. Then
-# peak memory, one configuration per process, at 511x511x215.
+# photon test; at every size the orbit under ParaView's light kit (5 lights). Frame-time
+# ratios are measured in one process per volume size; the build_*_ms columns say where
+# each rebuild's time goes. Then peak memory, one configuration per process, at
+# 511x511x215.
 # Writes <out>/render.csv, <out>/memory.csv and one PNG per configuration.
 #   usage: Benchmarks/render/run_render_benchmark.sh [build-dir] [out-dir] [frames]
 set -euo pipefail
@@ -18,9 +20,9 @@ rm -f "$out/render.csv"
 bash scripts/xvfb.sh "$bench" --frames "$frames" --out "$out" --append
 for dims in 383x383x161 511x511x215; do
   bash scripts/xvfb.sh "$bench" --frames "$frames" --out "$out" --resample "$dims" --append \
-    --only stock_composite,stock_composite_orbit,transport_still,transport_orbit_headlight,transport_orbit_headlight_interactive
+    --only stock_composite,stock_composite_orbit,transport_still,transport_orbit_headlight,transport_orbit_headlight_interactive,transport_orbit_lightkit
 done
-# Memory: a fresh process per configuration; the CSV's last column is its peak RSS.
+# Memory: a fresh process per configuration; column peak_rss_mib is its peak RSS.
 mkdir -p "$out/memory"
 rm -f "$out/memory/render.csv"
 for config in stock_composite transport_orbit_headlight; do

@@ -11,7 +11,7 @@
 // arriving light, gather, diffusion), each waiting for the GPU.
 //
 //   scatterer-bench-render [--frames N] [--size WxH] [--out DIR] [--resample XxYxZ]
-//                          [--only a,b] [--append]
+//                          [--only a,b] [--append] [--slice-sweep]
 //
 // Built as scatterer-bench-render-egl (SCATTERER_BENCH_EGL), the same benchmark renders
 // into a headless EGL context (ScattererEglContext.h) instead of an X window: for GPU
@@ -152,7 +152,7 @@ int main(int argc, char* argv[])
 {
   int frames = 5, width = 512, height = 512, resample[3] = { 0, 0, 0 };
   std::string out = "render-benchmark", only;
-  bool append = false;
+  bool append = false, sliceSweep = false;
   for (int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
@@ -169,10 +169,12 @@ int main(int argc, char* argv[])
       only = argv[++i];
     else if (a == "--append")
       append = true;
+    else if (a == "--slice-sweep")
+      sliceSweep = true;
     else
     {
       std::cerr << "usage: scatterer-bench-render [--frames N] [--size WxH] [--out DIR] "
-                   "[--resample XxYxZ] [--only a,b] [--append]\n";
+                   "[--resample XxYxZ] [--only a,b] [--append] [--slice-sweep]\n";
       return 2;
     }
   }
@@ -256,6 +258,8 @@ int main(int argc, char* argv[])
     if (st)
     {
       st->GetTransportVolume()->SetSynchronousTiming(true); // build times include the GPU work
+      // --slice-sweep: directional lights swept one slice per draw (A/B measurements)
+      st->GetTransportVolume()->SetSweepLinesInParallel(!sliceSweep);
     }
     vtkNew<vtkVolumeProperty> property;
     vtkNew<vtkRenderer> renderer;

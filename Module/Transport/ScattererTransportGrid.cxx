@@ -213,6 +213,36 @@ SweepPlan PlanSweep(const TransportGrid& grid, const vtkScattererTransportVolume
   return plan;
 }
 
+LineRange LinesOf(const TransportGrid& grid, const SweepPlan& plan,
+  const vtkScattererTransportVolume::Light& light, int fromStep, int toStep)
+{
+  // The step toward the light as st_stepTowardLight takes it (sweep texels).
+  const double w[3] = { light.Toward[0], light.Toward[1], light.Toward[2] };
+  double g[3];
+  Multiply3(grid.WorldToGrid, w, g);
+  const double ds[3] = { g[plan.Row], g[plan.Column], g[plan.Axis] };
+  const double along = std::max(std::abs(ds[2]), std::hypot(ds[0], ds[1]) / 4.0);
+  const double sign = ds[2] > 0.0 ? 1.0 : (ds[2] < 0.0 ? -1.0 : 0.0);
+  // The global indices of the steps' first and last slices (away from the light).
+  const int first = plan.Runs.empty() ? 0 : plan.Runs.front().first;
+  const int away = plan.Runs.empty() || plan.Runs.front().second >= first ? 1 : -1;
+  const double z0 = grid.FirstIndex[plan.Axis] + first + away * fromStep;
+  const double z1 = grid.FirstIndex[plan.Axis] + first + away * (toStep - 1);
+  const int sliceDims[2] = { grid.Dims[plan.Row], grid.Dims[plan.Column] };
+  LineRange range;
+  for (int i = 0; i < 2; ++i)
+  {
+    const double a = along > 0.0 ? ds[i] / along * sign : 0.0;
+    // round(z a) is monotonic in z: its extremes are at the first and last slices.
+    const double r0 = std::floor(z0 * a + 0.5), r1 = std::floor(z1 * a + 0.5);
+    const int lo = static_cast<int>(-std::max(r0, r1)) - 1;
+    const int hi = sliceDims[i] - 1 - static_cast<int>(std::min(r0, r1)) + 1;
+    range.Lo[i] = lo;
+    range.Count[i] = hi - lo + 1;
+  }
+  return range;
+}
+
 std::vector<float> SweepOrderToGridOrder(
   const TransportGrid& grid, const SweepPlan& plan, const std::vector<float>& sweep)
 {

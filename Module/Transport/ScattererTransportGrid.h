@@ -93,6 +93,20 @@ struct SweepPlan
  * directional light), or away from its own slice on both sides (a positional light). */
 SweepPlan PlanSweep(const TransportGrid& grid, const vtkScattererTransportVolume::Light& light);
 
+/** The lines of directional @p light swept by @p plan through @p grid
+ * (scatterer_transport_lines.glsl): line k holds texel k + round(z a) of slice z (sweep
+ * rows and columns, z the global slice index, a the sideways step per slice). Lo is the
+ * first k with a texel in the grid in the sweep's steps [@p fromStep, @p toStep) (step 0:
+ * the slice nearest the light), Count how many, per sweep row and column; one more on
+ * each side than the exact range, for rounding. */
+struct LineRange
+{
+  int Lo[2] = { 0, 0 };
+  int Count[2] = { 1, 1 };
+};
+LineRange LinesOf(const TransportGrid& grid, const SweepPlan& plan,
+  const vtkScattererTransportVolume::Light& light, int fromStep, int toStep);
+
 /** @p sweep (a transmittance texture read back in sweep order, @p plan's) in grid order
  * (x fastest). */
 std::vector<float> SweepOrderToGridOrder(

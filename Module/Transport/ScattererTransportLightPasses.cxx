@@ -22,59 +22,55 @@
 
 namespace scatterer_gpu
 {
-bool SweepTransmittance(const TransportPass& pass, const vtkScattererTransportVolume::Light& light,
-  SweepPlan& swept, std::string& why)
+namespace
 {
-  const vtkScattererTransportVolume::Inputs& in = pass.In;
+// The uniforms and samplers every sweep program reads
+// (scatterer_transport_sweep_common.glsl), for the bound program's lifetime.
+class SweepBindings
+{
+public:
+  SweepBindings(vtkShaderProgram* program, const TransportPass& pass,
+    const vtkScattererTransportVolume::Light& light, const SweepPlan& plan, const int sweepDims[3],
+    vtkTextureObject* enteringTexture, const vtkScattererTransportVolume::EnteringDepth* entering)
+    : Volume(program, pass.In)
+    , Medium(program, "st_medium", pass.Tables.Medium)
+    , DepthInFront(program, "st_enteringDepth", enteringTexture)
+  {
+    const vtkScattererTransportVolume::Inputs& in = pass.In;
+    SetCommonUniforms(program, pass.Grid, in);
+    SetSweepOrder(program, plan);
+    const float sweepDimsF[3] = { static_cast<float>(sweepDims[0]),
+      static_cast<float>(sweepDims[1]), static_cast<float>(sweepDims[2]) };
+    program->SetUniform3f("st_sweepDims", sweepDimsF);
+    program->SetUniform3f("st_lightToward", light.Toward);
+    program->SetUniform3f("st_lightPosition", light.Position);
+    program->SetUniformi("st_substeps", std::max(1, in.Downsample));
+    program->SetUniformf("st_sliceOrigin", static_cast<float>(pass.Grid.FirstIndex[plan.Axis]));
+    program->SetUniformf("st_firstSlice", static_cast<float>(plan.Runs.front().first));
+    SetIndexUniforms(program, in);
+    if (entering)
+    {
+      program->SetUniform3f("st_enteringLight", entering->Light);
+      program->SetUniform3f("st_enteringU", entering->U);
+      program->SetUniform3f("st_enteringV", entering->V);
+      program->SetUniform2f("st_enteringLo", entering->Lo);
+      program->SetUniformf("st_enteringSide", entering->Side);
+    }
+  }
+
+private:
+  ScopedVolume Volume;
+  ScopedSampler Medium;
+  ScopedSampler DepthInFront;
+};
+
+// The sweep one slice per draw (scatterer_transport_sweep.glsl): each slice is drawn
+// into one slice texture, reading the other (the slice before it), and copied into its
+// layer of the transmittance texture (a second output).
+void DrawSlices(const TransportPass& pass, vtkOpenGLQuadHelper* quad, vtkShaderProgram* program,
+  const SweepPlan& plan, const int sweepDims[3])
+{
   TransportTextures& textures = pass.Textures;
-  const SweepPlan plan = PlanSweep(pass.Grid, light);
-  int sweepDims[3];
-  plan.GetSweepDims(pass.Grid, sweepDims);
-  if (!textures.AllocateSweep(pass.Window, sweepDims, why))
-  {
-    return false;
-  }
-
-  // A piece of a distributed volume: the depth in front of it (1 texel of zeros when
-  // none, so the sampler is always bound).
-  const vtkScattererTransportVolume::EnteringDepth* entering = light.Entering.get();
-  const bool hasEntering = entering && entering->Size > 0 &&
-    entering->Depth.size() == static_cast<size_t>(entering->Size) * entering->Size;
-  vtkOpenGLQuadHelper* quad = pass.Programs.Sweep(
-    pass.Window, light.Positional, hasEntering ? (entering->Positional ? 2 : 1) : 0, why);
-  if (!quad)
-  {
-    return false;
-  }
-  vtkShaderProgram* program = UseProgram(pass.Window, quad);
-  SetCommonUniforms(program, pass.Grid, in);
-  SetSweepOrder(program, plan);
-  const float sweepDimsF[3] = { static_cast<float>(sweepDims[0]), static_cast<float>(sweepDims[1]),
-    static_cast<float>(sweepDims[2]) };
-  program->SetUniform3f("st_sweepDims", sweepDimsF);
-  program->SetUniform3f("st_lightToward", light.Toward);
-  program->SetUniform3f("st_lightPosition", light.Position);
-  program->SetUniformi("st_substeps", std::max(1, in.Downsample));
-  program->SetUniformf("st_sliceOrigin", static_cast<float>(pass.Grid.FirstIndex[plan.Axis]));
-  SetIndexUniforms(program, in);
-  vtkSmartPointer<vtkTextureObject> enteringTexture =
-    NewTransportTexture(pass.Window, true, vtkTextureObject::ClampToEdge);
-  float none = 0.0f;
-  enteringTexture->Create2DFromRaw(hasEntering ? entering->Size : 1,
-    hasEntering ? entering->Size : 1, 1, VTK_FLOAT,
-    hasEntering ? const_cast<float*>(entering->Depth.data()) : &none);
-  if (hasEntering)
-  {
-    program->SetUniform3f("st_enteringLight", entering->Light);
-    program->SetUniform3f("st_enteringU", entering->U);
-    program->SetUniform3f("st_enteringV", entering->V);
-    program->SetUniform2f("st_enteringLo", entering->Lo);
-    program->SetUniformf("st_enteringSide", entering->Side);
-  }
-  ScopedVolume volume(program, in);
-  ScopedSampler medium(program, "st_medium", pass.Tables.Medium);
-  ScopedSampler depthInFront(program, "st_enteringDepth", enteringTexture);
-
   pass.Window->GetState()->vtkglViewport(0, 0, sweepDims[0], sweepDims[1]);
   // Progress: kSweepSteps reports per sweep, the last one after the sweep
   // (TransportProgress::SweepDone).
@@ -85,8 +81,6 @@ bool SweepTransmittance(const TransportPass& pass, const vtkScattererTransportVo
   }
   const int chunk = std::max(1, (total + kSweepSteps - 1) / kSweepSteps);
   int slicesDone = 0;
-  // Each slice is drawn into one slice texture, reading the other (the slice before
-  // it), and copied into its layer of the transmittance texture (a second output).
   int current = 0;
   for (const auto& run : plan.Runs)
   {
@@ -117,6 +111,113 @@ bool SweepTransmittance(const TransportPass& pass, const vtkScattererTransportVo
         break;
       }
     }
+  }
+}
+
+// A directional light's lines swept in parallel (scatterer_transport_lines.glsl, into
+// Lines by image store), kLineSlices slices a draw, each draw over the lines with a
+// texel in the grid in its slices.
+void DrawLines(const TransportPass& pass, vtkShaderProgram* program, vtkOpenGLQuadHelper* lines,
+  const vtkScattererTransportVolume::Light& light, const SweepPlan& plan, const int sweepDims[3])
+{
+  constexpr int kLineSlices = 16;
+  TransportTextures& textures = pass.Textures;
+  vtkOpenGLState* state = pass.Window->GetState();
+  const LineRange all = LinesOf(pass.Grid, plan, light, 0, sweepDims[2]);
+  const float origin[2] = { static_cast<float>(all.Lo[0]), static_cast<float>(all.Lo[1]) };
+  program->SetUniform2f("st_lineOrigin", origin);
+  program->SetUniformi("st_chunkSlices", kLineSlices);
+  program->SetUniformi("st_lines", 0); // image unit 0
+  glBindImageTexture(0, textures.Lines->GetHandle(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG16F);
+  pass.Framebuffer->ActivateDrawBuffers(1);
+  // No line was left anywhere yet: step -1 matches no draw.
+  state->vtkglClearColor(1.0, -1.0, 0.0, 1.0);
+  for (vtkTextureObject* ends : { textures.LineEnds[0], textures.LineEnds[1] })
+  {
+    Attach2D(0, ends);
+    state->vtkglViewport(0, 0, all.Count[0], all.Count[1]);
+    state->vtkglClear(GL_COLOR_BUFFER_BIT);
+  }
+  int current = 0;
+  for (int first = 0; first < sweepDims[2]; first += kLineSlices)
+  {
+    const LineRange drawn =
+      LinesOf(pass.Grid, plan, light, first, std::min(first + kLineSlices, sweepDims[2]));
+    Attach2D(0, textures.LineEnds[current]);
+    state->vtkglViewport(
+      drawn.Lo[0] - all.Lo[0], drawn.Lo[1] - all.Lo[1], drawn.Count[0], drawn.Count[1]);
+    ScopedSampler start(program, "st_lineStart", textures.LineEnds[1 - current]);
+    program->SetUniformi("st_chunkFirst", first);
+    lines->Render();
+    current = 1 - current;
+  }
+  glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG16F);
+  // The mean's draw reads what these stored.
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+}
+}
+
+bool SweepTransmittance(const TransportPass& pass, const vtkScattererTransportVolume::Light& light,
+  SweepPlan& swept, std::string& why)
+{
+  TransportTextures& textures = pass.Textures;
+  const SweepPlan plan = PlanSweep(pass.Grid, light);
+  int sweepDims[3];
+  plan.GetSweepDims(pass.Grid, sweepDims);
+  if (!textures.AllocateSweep(pass.Window, sweepDims, why))
+  {
+    return false;
+  }
+
+  // A piece of a distributed volume: the depth in front of it (1 texel of zeros when
+  // none, so the sampler is always bound).
+  const vtkScattererTransportVolume::EnteringDepth* entering = light.Entering.get();
+  const bool hasEntering = entering && entering->Size > 0 &&
+    entering->Depth.size() == static_cast<size_t>(entering->Size) * entering->Size;
+  const int enteringKind = hasEntering ? (entering->Positional ? 2 : 1) : 0;
+  vtkSmartPointer<vtkTextureObject> enteringTexture =
+    NewTransportTexture(pass.Window, true, vtkTextureObject::ClampToEdge);
+  float none = 0.0f;
+  enteringTexture->Create2DFromRaw(hasEntering ? entering->Size : 1,
+    hasEntering ? entering->Size : 1, 1, VTK_FLOAT,
+    hasEntering ? const_cast<float*>(entering->Depth.data()) : &none);
+  const auto* enteringMap = hasEntering ? entering : nullptr;
+
+  // A directional light's lines in parallel where the implementation can; otherwise
+  // (and for positional lights, whose lines diverge) slice by slice.
+  vtkOpenGLQuadHelper* lines = nullptr;
+  vtkOpenGLQuadHelper* mean = nullptr;
+  if (!light.Positional && pass.SweepLinesInParallel &&
+    pass.Programs.SweepLines(pass.Window, enteringKind, lines, mean))
+  {
+    const LineRange range = LinesOf(pass.Grid, plan, light, 0, sweepDims[2]);
+    if (!textures.AllocateLines(pass.Window, sweepDims, range.Count, why))
+    {
+      return false;
+    }
+    {
+      vtkShaderProgram* program = UseProgram(pass.Window, lines);
+      SweepBindings bindings(program, pass, light, plan, sweepDims, enteringTexture, enteringMap);
+      DrawLines(pass, program, lines, light, plan, sweepDims);
+    }
+    vtkShaderProgram* program = UseProgram(pass.Window, mean);
+    SweepBindings bindings(program, pass, light, plan, sweepDims, enteringTexture, enteringMap);
+    ScopedSampler carried(program, "st_lines", textures.Lines);
+    pass.Window->GetState()->vtkglViewport(0, 0, sweepDims[0], sweepDims[1]);
+    DrawLayers(pass.Framebuffer, mean, program, { textures.Transmittance }, sweepDims[2]);
+    pass.Progress.StepDone();
+  }
+  else
+  {
+    vtkOpenGLQuadHelper* quad =
+      pass.Programs.Sweep(pass.Window, light.Positional, enteringKind, why);
+    if (!quad)
+    {
+      return false;
+    }
+    vtkShaderProgram* program = UseProgram(pass.Window, quad);
+    SweepBindings bindings(program, pass, light, plan, sweepDims, enteringTexture, enteringMap);
+    DrawSlices(pass, quad, program, plan, sweepDims);
   }
   DetachAll(pass.Framebuffer);
   swept = plan;

@@ -27,6 +27,9 @@ struct TransportPass
   const TransportTables& Tables;
   TransportTextures& Textures; ///< the targets, allocated by the passes as they need
   TransportProgress& Progress;
+  /// A directional light's lines in two draws where the implementation can
+  /// (vtkScattererTransportVolume::SweepLinesInParallel)
+  bool SweepLinesInParallel = true;
 };
 }
 

@@ -13,6 +13,7 @@
 #include "vtkOpenGLShaderCache.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
+#include "vtk_glew.h"
 
 #include "scatterer_transport_arrive.h"
 #include "scatterer_transport_arriving.h"
@@ -24,10 +25,13 @@
 #include "scatterer_transport_gather.h"
 #include "scatterer_transport_layers_gs.h"
 #include "scatterer_transport_layers_vs.h"
+#include "scatterer_transport_line_mean.h"
+#include "scatterer_transport_lines.h"
 #include "scatterer_transport_materials.h"
 #include "scatterer_transport_medium.h"
 #include "scatterer_transport_source.h"
 #include "scatterer_transport_sweep.h"
+#include "scatterer_transport_sweep_common.h"
 
 #include <algorithm>
 #include <initializer_list>
@@ -41,14 +45,15 @@ namespace
 const char* const kCompileFailed =
   "the transport shaders failed to compile on this OpenGL implementation";
 
-// The common declarations, after the variant's defines, the materials' and the
-// arriving light's functions go where the pass has their tags.
+// The common declarations, after the variant's defines, the materials', the sweeps' and
+// the arriving light's functions go where the pass has their tags.
 std::string WithCommon(const char* pass, const std::string& variant)
 {
   std::string text = pass;
   const std::pair<std::string, std::string> chunks[] = { { "//VTK::Transport::Common",
                                                            variant + scatterer_transport_common },
     { "//VTK::Transport::Materials", scatterer_transport_materials },
+    { "//VTK::Transport::Sweep", scatterer_transport_sweep_common },
     { "//VTK::Transport::Arriving", scatterer_transport_arriving } };
   for (const auto& chunk : chunks)
   {
@@ -148,6 +153,51 @@ vtkOpenGLQuadHelper* TransportPrograms::Sweep(
   return sweep.get();
 }
 
+bool TransportPrograms::SweepLines(vtkOpenGLRenderWindow* window, int entering,
+  vtkOpenGLQuadHelper*& lines, vtkOpenGLQuadHelper*& mean)
+{
+  if (this->LinesRefused || entering < 0 || entering > 1)
+  {
+    return false;
+  }
+  // Asked before compiling, so that an implementation without it is not shown the
+  // programs' compile errors; glew's entry points are null where it lacks them.
+  int major = 0, minor = 0;
+  window->GetOpenGLVersion(major, minor);
+  const bool imageLoadStore =
+    major > 4 || (major == 4 && minor >= 2) || glewIsSupported("GL_ARB_shader_image_load_store");
+  if (!imageLoadStore || !glBindImageTexture || !glMemoryBarrier)
+  {
+    this->LinesRefused = true;
+    return false;
+  }
+  const auto defines = [this](int e)
+  { return this->CreatedVariant + "#define ST_SWEEP_ENTERING " + std::to_string(e) + "\n"; };
+  if (!this->Lines)
+  {
+    this->Lines.reset(new vtkOpenGLQuadHelper(window,
+      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(),
+      WithCommon(scatterer_transport_lines, defines(0)).c_str(), ""));
+  }
+  std::unique_ptr<vtkOpenGLQuadHelper>& lineMean = this->LineMeans[entering];
+  if (!lineMean)
+  {
+    lineMean.reset(new vtkOpenGLQuadHelper(window, scatterer_transport_layers_vs,
+      WithCommon(scatterer_transport_line_mean, defines(entering)).c_str(),
+      scatterer_transport_layers_gs));
+  }
+  if (!this->Lines->Program || !lineMean->Program)
+  {
+    this->LinesRefused = true;
+    this->Lines.reset();
+    lineMean.reset();
+    return false;
+  }
+  lines = this->Lines.get();
+  mean = lineMean.get();
+  return true;
+}
+
 void TransportPrograms::ReleaseGraphicsResources(vtkWindow* window)
 {
   for (auto* q : this->All())
@@ -158,14 +208,24 @@ void TransportPrograms::ReleaseGraphicsResources(vtkWindow* window)
       q->reset();
     }
   }
+  const auto release = [window](std::unique_ptr<vtkOpenGLQuadHelper>& quad)
+  {
+    if (quad)
+    {
+      quad->ReleaseGraphicsResources(window);
+      quad.reset();
+    }
+  };
   for (auto& sweep : this->Sweeps)
   {
-    if (sweep)
-    {
-      sweep->ReleaseGraphicsResources(window);
-      sweep.reset();
-    }
+    release(sweep);
   }
+  release(this->Lines);
+  for (auto& mean : this->LineMeans)
+  {
+    release(mean);
+  }
+  this->LinesRefused = false;
 }
 
 vtkShaderProgram* UseProgram(vtkOpenGLRenderWindow* window, vtkOpenGLQuadHelper* quad)

@@ -149,6 +149,39 @@ bool TransportTextures::AllocateSweep(
   return true;
 }
 
+bool TransportTextures::AllocateLines(
+  vtkOpenGLRenderWindow* window, const int sweepDims[3], const int lineDims[2], std::string& why)
+{
+  if (!HasSize(this->Lines, sweepDims[0], sweepDims[1], sweepDims[2]))
+  {
+    this->Lines = NewTransmittance(window);
+    this->Lines->SetInternalFormat(GL_RG16F);
+    this->Lines->SetFormat(GL_RG);
+    if (!this->Lines->Allocate3D(sweepDims[0], sweepDims[1], sweepDims[2], 2, VTK_FLOAT))
+    {
+      this->Lines = nullptr;
+      why = "the lines' texture could not be allocated";
+      return false;
+    }
+  }
+  for (auto& ends : this->LineEnds)
+  {
+    if (!HasSize(ends, lineDims[0], lineDims[1], 1))
+    {
+      ends = NewTransportTexture(window, false, vtkTextureObject::ClampToEdge);
+      ends->SetInternalFormat(GL_RG32F);
+      ends->SetFormat(GL_RG);
+      if (!ends->Allocate2D(lineDims[0], lineDims[1], 2, VTK_FLOAT))
+      {
+        ends = nullptr;
+        why = "the lines' texture could not be allocated";
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
 bool TransportTextures::AllocateCoarse(
   vtkOpenGLRenderWindow* window, const int dims[3], std::string& why)
 {
@@ -184,14 +217,16 @@ size_t TransportTextures::GetGPUBytes() const
       Texels(this->CoarseSource)) +
     r16f *
     (Texels(this->Transmittance) + Texels(this->Slices[0]) + Texels(this->Slices[1]) +
+      2 * Texels(this->Lines) + 4 * (Texels(this->LineEnds[0]) + Texels(this->LineEnds[1])) +
       Texels(this->CoarseOcclusion));
 }
 
 void TransportTextures::ReleaseGraphicsResources(vtkWindow* window)
 {
-  for (auto* t : { &this->Light, &this->FineMedium, &this->Arriving, &this->Transmittance,
-         &this->Slices[0], &this->Slices[1], &this->Fluence[0], &this->Fluence[1],
-         &this->CoarseMedium, &this->CoarseSource, &this->CoarseOcclusion })
+  for (auto* t :
+    { &this->Light, &this->FineMedium, &this->Arriving, &this->Transmittance, &this->Slices[0],
+      &this->Slices[1], &this->Lines, &this->LineEnds[0], &this->LineEnds[1], &this->Fluence[0],
+      &this->Fluence[1], &this->CoarseMedium, &this->CoarseSource, &this->CoarseOcclusion })
   {
     if (*t)
     {

@@ -35,8 +35,13 @@ struct TransportTextures
   std::vector<int> LayerGathers;
   /// RGBA16F, fine grid + 1 texel a side: light arriving unscattered (null when unused)
   vtkSmartPointer<vtkTextureObject> Arriving;
-  vtkSmartPointer<vtkTextureObject> Transmittance;   ///< R16F, sweep order
-  vtkSmartPointer<vtkTextureObject> Slices[2];       ///< R16F, ping-pong of the sweep
+  vtkSmartPointer<vtkTextureObject> Transmittance; ///< R16F, sweep order
+  vtkSmartPointer<vtkTextureObject> Slices[2];     ///< R16F, ping-pong of the sweep
+  /// RG16F, sweep order: a directional light's lines swept in parallel, per texel T and
+  /// its mean factor (scatterer_transport_lines.glsl); its border reads 1
+  vtkSmartPointer<vtkTextureObject> Lines;
+  /// RG32F, 2D, per line: T where a draw of the lines leaves it, and that step (ping-pong)
+  vtkSmartPointer<vtkTextureObject> LineEnds[2];
   vtkSmartPointer<vtkTextureObject> Fluence[2];      ///< RGBA16F, coarse grid: diffusion ping-pong
   vtkSmartPointer<vtkTextureObject> CoarseMedium;    ///< RGBA16F, coarse grid: albedo, sigma_t
   vtkSmartPointer<vtkTextureObject> CoarseSource;    ///< RGBA16F, coarse grid: light scattered once
@@ -59,6 +64,11 @@ struct TransportTextures
   /** Transmittance of @p sweepDims (rows, columns, slices) and the slices; false with
    * @p why set if refused. */
   bool AllocateSweep(vtkOpenGLRenderWindow* window, const int sweepDims[3], std::string& why);
+
+  /** Lines of @p sweepDims and LineEnds of @p lineDims (the lines' draws); false with
+   * @p why set if refused. */
+  bool AllocateLines(
+    vtkOpenGLRenderWindow* window, const int sweepDims[3], const int lineDims[2], std::string& why);
 
   /** The five coarse grids of @p dims; false with @p why set if refused. */
   bool AllocateCoarse(vtkOpenGLRenderWindow* window, const int dims[3], std::string& why);

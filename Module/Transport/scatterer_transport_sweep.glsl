@@ -59,56 +59,17 @@
 // The slices carry T_piece; the transmittance texture gets T (its texel mean).
 //============================================================================
 //VTK::Transport::Common
+//VTK::Transport::Sweep
 in vec2 texCoord;
 uniform sampler2D st_previous;     // the slice swept before this one
 uniform int st_hasPrevious;        // 0: first slice of a sweep, T = 1
 uniform float st_slice;            // this slice's index along the sweep axis
-uniform float st_sliceOrigin;      // the global index of slice 0 (grid texels)
-uniform vec3 st_sweepDims;         // (rows, columns, slices) of the sweep texture
-uniform mat3 st_worldToGrid;       // world vector -> grid-index vector
-uniform mat3 st_gridToWorld;       // grid-index vector -> world vector
 uniform vec3 st_lightToward;       // directional: unit vector toward the light (world)
 uniform vec3 st_lightPosition;     // positional: world position
-uniform int st_substeps;           // extinction samples per step (volume voxels per texel)
-uniform mat4 st_texToIndex;        // volume texture coordinates -> structured index
-uniform sampler2D st_enteringDepth;
-uniform vec3 st_enteringLight;     // positional: the light (index space)
-uniform vec3 st_enteringU;         // directional: the map plane's basis (index space)
-uniform vec3 st_enteringV;
-uniform vec2 st_enteringLo;        // directional: the map's corner on the plane
-uniform float st_enteringSide;     // directional: the map's side (index units)
 
 // The program comes in one variant per kind of light (ScattererTransportPrograms.cxx):
-// ST_SWEEP_POSITIONAL (0: directional, 1: positional) and ST_SWEEP_ENTERING (the depth
-// in front of a piece: 0 none, 1 a directional map, 2 a positional (octahedral) one).
-// Mirrors scatterer::lightspace::Map::coordinate.
-vec2 st_octahedral(vec3 d)
-{
-  vec2 p = d.xy / (abs(d.x) + abs(d.y) + abs(d.z));
-  if (d.z < 0.0)
-  {
-    vec2 s = vec2(p.x >= 0.0 ? 1.0 : -1.0, p.y >= 0.0 ? 1.0 : -1.0);
-    p = (vec2(1.0) - abs(p.yx)) * s;
-  }
-  return p;
-}
-
-// The optical depth in front of this piece on the light's line through index i.
-float st_depthInFront(vec3 i)
-{
-#if ST_SWEEP_ENTERING == 0
-  return 0.0;
-#else
-#if ST_SWEEP_ENTERING == 2
-  vec3 d = i - st_enteringLight;
-  vec2 c = st_octahedral(length(d) > 0.0 ? normalize(d) : vec3(0.0, 0.0, 1.0)) * 0.5 + vec2(0.5);
-#else
-  vec2 c = (vec2(dot(i, st_enteringU), dot(i, st_enteringV)) - st_enteringLo) / st_enteringSide;
-#endif
-  return texture(st_enteringDepth, c).r;
-#endif
-}
-
+// ST_SWEEP_POSITIONAL (0: directional, 1: positional) and ST_SWEEP_ENTERING
+// (scatterer_transport_sweep_common.glsl).
 void main()
 {
   vec3 js = vec3(floor(texCoord * st_sweepDims.xy), st_slice);
@@ -123,15 +84,10 @@ void main()
 #else
     vec3 toward = st_lightToward;
 #endif
-    vec3 ds = st_toSweep * (st_worldToGrid * toward);
-    // One slice toward the light; a light nearly in this slice's plane would
-    // shift sideways without bound: at most 4 texels per step.
-    float along = max(abs(ds.z), length(ds.xy) / 4.0);
-    vec3 stepSweep = ds / max(along, 1.0e-20);
-    stepSweep.z = sign(ds.z);
+    vec3 stepSweep, stepGrid;
+    float len;
+    st_stepTowardLight(toward, stepSweep, stepGrid, len);
     vec3 qs = js + stepSweep;
-    vec3 stepGrid = transpose(st_toSweep) * stepSweep;
-    float len = length(st_gridToWorld * stepGrid);
     // Outside the grid the light has crossed no matter: the border reads 1.
 #if ST_SWEEP_POSITIONAL
     float Tq = texture(st_previous, (qs.xy + vec2(0.5)) / st_sweepDims.xy).r;
@@ -139,34 +95,17 @@ void main()
 #else
     // The shifts e(z) of this slice and of the one before (see the top).
     vec2 a = stepSweep.xy * stepSweep.z;
-    vec2 zj = vec2(js.z + st_sliceOrigin) * a;
-    vec2 zq = vec2(qs.z + st_sliceOrigin) * a;
-    vec2 ej = floor(zj + 0.5) - zj;
-    vec2 eq = floor(zq + 0.5) - zq;
+    vec2 ej = st_sliceShift(js.z, a);
+    vec2 eq = st_sliceShift(qs.z, a);
     float Tcarried =
       texture(st_previous, (floor(qs.xy + eq - ej + 0.5) + vec2(0.5)) / st_sweepDims.xy).r;
     float Tq = texture(st_previous, (qs.xy + eq + vec2(0.5)) / st_sweepDims.xy).r;
 #endif
-    // tau: the whole step q -> p; tauHalf: its part inside this texel, from the
-    // texel's face toward the light (halfway to q) to p.
-    float tau = 0.0;
-    float tauHalf = 0.0;
-    for (int i = 0; i < st_substeps; ++i)
-    {
-      float f = (float(i) + 0.5) / float(st_substeps);
-      float a = st_attenuationAt(st_gridToTexture(j + stepGrid * f));
-      tau += a;
-      tauHalf += f < 0.5 ? a : (f == 0.5 ? 0.5 * a : 0.0); // a sample on the face: half
-    }
-    tau *= len / float(st_substeps);
-    tauHalf *= len / float(st_substeps);
+    float tau, tauHalf;
+    st_stepDepth(j, stepGrid, len, tau, tauHalf);
     T = Tcarried * exp(-tau);
-    // The texel's mean light, (T_in + T_out) / 2 = T cosh(tauHalf), written with
-    // exponents <= 0 (tauHalf <= tau): T cosh(tauHalf) overflows to 0 * inf in
-    // opaque voxels hundreds of mean free paths deep.
-    Tmean = 0.5 * Tq * (exp(tauHalf - tau) + exp(-tauHalf - tau));
+    Tmean = Tq * st_meanFactor(tau, tauHalf);
   }
   gl_FragData[0] = vec4(T);
-  vec3 index = (st_texToIndex * vec4(st_gridToTexture(j), 1.0)).xyz;
-  gl_FragData[1] = vec4(Tmean * exp(-st_depthInFront(index)));
+  gl_FragData[1] = vec4(st_storedTransmittance(Tmean, j));
 }

@@ -59,7 +59,8 @@ struct vtkScattererTransportVolume::vtkInternals
   StageMilliseconds LastStages;
   int Builds = 0;
   scatterer_gpu::SweepPlan CurrentPlan; // of the light whose transmittance the texture holds
-  Inputs Last; // of the last build (ReadTransmittance sweeps again from it)
+  Inputs Last;                      // of the last build (ReadTransmittance sweeps again from it)
+  bool SweepLinesInParallel = true; // the object's, at the last Update or ReadTransmittance
 
   bool IsCurrent(vtkOpenGLRenderWindow* window, std::uint64_t key) const
   {
@@ -69,7 +70,7 @@ struct vtkScattererTransportVolume::vtkInternals
   scatterer_gpu::TransportPass Pass(const Inputs& in)
   {
     return { this->Context, this->Framebuffer, this->Programs, in, this->Grid, this->Tables,
-      this->Textures, this->Progress };
+      this->Textures, this->Progress, this->SweepLinesInParallel };
   }
 
   /** Sweeps @p light's transmittance; CurrentPlan is its plan if it succeeds. */
@@ -224,6 +225,7 @@ bool vtkScattererTransportVolume::Update(
   }
   const auto start = std::chrono::steady_clock::now();
   s.Context = window;
+  s.SweepLinesInParallel = this->SweepLinesInParallel;
   s.Last = in;
 
   // The stages: place the grid, compile the programs (once), allocate the light
@@ -281,6 +283,7 @@ std::vector<float> vtkScattererTransportVolume::ReadTransmittance(
   window->MakeCurrent();
   std::string why;
   bool ok = false;
+  s.SweepLinesInParallel = this->SweepLinesInParallel;
   {
     scatterer_gpu::TransportPassState state(window, s.Framebuffer);
     ok = s.Sweep(s.Last, s.Last.Lights[static_cast<size_t>(light)], why);
@@ -385,4 +388,5 @@ void vtkScattererTransportVolume::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "GPUBytes: " << this->GetGPUBytes() << "\n";
   os << indent << "SynchronousTiming: " << (this->SynchronousTiming ? "On" : "Off") << "\n";
+  os << indent << "SweepLinesInParallel: " << (this->SweepLinesInParallel ? "On" : "Off") << "\n";
 }

@@ -265,11 +265,26 @@ public:
   vtkGetMacro(SynchronousTiming, bool);
   ///@}
 
+  ///@{
+  /**
+   * Sweep a directional light's lines in parallel, in two draws (image load/store;
+   * scatterer_transport_lines.glsl), rather than one draw per slice
+   * (scatterer_transport_sweep.glsl). Both compute the same transmittance; the slice
+   * sweep serves positional lights, and directional ones where the OpenGL implementation
+   * has no image load/store (before 4.2, as on macOS). Default on; off for tests and A/B
+   * measurements. A change applies at the next rebuild.
+   */
+  vtkSetMacro(SweepLinesInParallel, bool);
+  vtkGetMacro(SweepLinesInParallel, bool);
+  vtkBooleanMacro(SweepLinesInParallel, bool);
+  ///@}
+
 protected:
   vtkScattererTransportVolume();
   ~vtkScattererTransportVolume() override;
 
   bool SynchronousTiming = false;
+  bool SweepLinesInParallel = true;
 
 private:
   vtkScattererTransportVolume(const vtkScattererTransportVolume&) = delete;

@@ -1,0 +1,83 @@
+//VTK::System::Dec
+#extension GL_ARB_shader_image_load_store : require
+//VTK::Output::Dec
+//============================================================================
+// Light transport volume, pass 1 for a directional light, its lines in parallel
+// (one draw): what scatterer_transport_sweep.glsl computes slice after slice, one
+// draw per slice, each fragment here computes along one line through all slices.
+//
+// The slices carry the light along lines that keep to whole texels (the top of
+// scatterer_transport_sweep.glsl): texel c of slice z takes the light of texel
+//   c + round(z_q a) - round(z a)
+// of the slice before, z_q. So c - round(z a) is the same all along a line: the line's
+// index k. A line needs nothing from the others, and one fragment per line carries
+//   T(c, z) = T(c', z_q) exp(-tau(c, z))                 (Beer-Lambert)
+// from the first slice (T = 1) away from the light, as the slices do, with T = 1 where
+// the line's texel in the slice before lies outside the grid (the border the slice
+// sweep reads). It stores, per texel, T and the factor st_meanFactor that the texel's
+// mean light takes from the light entering it (image load/store: one fragment writes
+// every slice of its line). The mean needs the light of the slice before between lines
+// (interpolated at q + e(z_q)), so a second, layered draw computes it
+// (scatterer_transport_line_mean.glsl). The lines go st_chunkSlices slices a draw, each
+// draw taking up T where the one before left it (st_lineStart) and covering only the
+// lines with a texel in the grid in its slices: an oblique light's lines that cross the
+// grid in all slices together are half again as many as a slice's texels (measured: 2.5
+// times at 511x511x215), and a draw of them all would run the others idle. A handful of
+// draws per light instead of one per slice: on a GPU a draw costs more than a slice's
+// fragments.
+//============================================================================
+//VTK::Transport::Common
+//VTK::Transport::Sweep
+in vec2 texCoord;
+layout(rg16f) writeonly uniform image3D st_lines; // per texel (T, mean factor), sweep order
+uniform vec3 st_lightToward;    // unit vector toward the light (world)
+uniform vec2 st_lineOrigin;     // the index k of pixel 0 (the draws cover what they need)
+uniform float st_firstSlice;    // the sweep's first slice (nearest the light)
+uniform int st_chunkFirst;      // this draw's slices: st_chunkFirst, ... (in sweep order)
+uniform int st_chunkSlices;
+// Per line, (T, the step it was left at) by the draw before that drew the line: a line
+// the draw before did not draw had no texel in the grid there, and enters it now (T = 1).
+uniform sampler2D st_lineStart;
+
+void main()
+{
+  // The draws cover parts of the lines' texture (glViewport): the pixel is gl_FragCoord's.
+  // texCoord is read only to keep the attribute VTK's quad binds (vtkOpenGLQuadHelper
+  // reports an error for a program without it); it never exceeds 1.
+  if (texCoord.x > 2.0)
+  {
+    discard;
+  }
+  vec2 pixel = floor(gl_FragCoord.xy);
+  vec2 k = pixel + st_lineOrigin;
+  vec3 stepSweep, stepGrid;
+  float len;
+  st_stepTowardLight(st_lightToward, stepSweep, stepGrid, len);
+  vec2 a = stepSweep.xy * stepSweep.z;
+  float away = -stepSweep.z; // the slices follow each other away from the light
+  vec2 start = texelFetch(st_lineStart, ivec2(pixel), 0).rg;
+  float T = st_chunkFirst > 0 && start.g == float(st_chunkFirst) ? start.r : 1.0;
+  int end = min(st_chunkFirst + st_chunkSlices, int(st_sweepDims.z));
+  for (int i = st_chunkFirst; i < end; ++i)
+  {
+    float z = st_firstSlice + float(i) * away;
+    vec2 c = k + st_sliceShift(z, a) + vec2(z + st_sliceOrigin) * a; // k + round(z a)
+    c = floor(c + 0.5);
+    if (any(lessThan(c, vec2(0.0))) || any(greaterThanEqual(c, st_sweepDims.xy)))
+    {
+      T = 1.0; // outside the grid the light has crossed no matter
+      continue;
+    }
+    float factor = 1.0;
+    if (i > 0)
+    {
+      vec3 j = transpose(st_toSweep) * vec3(c, z);
+      float tau, tauHalf;
+      st_stepDepth(j, stepGrid, len, tau, tauHalf);
+      T *= exp(-tau);
+      factor = st_meanFactor(tau, tauHalf);
+    }
+    imageStore(st_lines, ivec3(vec3(c, z)), vec4(T, factor, 0.0, 0.0));
+  }
+  gl_FragData[0] = vec4(T, float(end), 0.0, 1.0);
+}

@@ -1,0 +1,106 @@
+//============================================================================
+// Light transport volume: what the sweeps of pass 1 share (the slice by slice sweep,
+// scatterer_transport_sweep.glsl, and a directional light's lines swept in parallel,
+// scatterer_transport_lines.glsl and scatterer_transport_line_mean.glsl): the step
+// toward the light, the optical depth over it, a slice's shift, and the depth in
+// front of a piece of a distributed volume. The sweep's conventions and equations are
+// at the top of scatterer_transport_sweep.glsl.
+//============================================================================
+uniform float st_sliceOrigin;      // the global index of slice 0 (grid texels)
+uniform vec3 st_sweepDims;         // (rows, columns, slices) of the sweep texture
+uniform mat3 st_worldToGrid;       // world vector -> grid-index vector
+uniform mat3 st_gridToWorld;       // grid-index vector -> world vector
+uniform int st_substeps;           // extinction samples per step (volume voxels per texel)
+uniform mat4 st_texToIndex;        // volume texture coordinates -> structured index
+uniform sampler2D st_enteringDepth;
+uniform vec3 st_enteringLight;     // positional: the light (index space)
+uniform vec3 st_enteringU;         // directional: the map plane's basis (index space)
+uniform vec3 st_enteringV;
+uniform vec2 st_enteringLo;        // directional: the map's corner on the plane
+uniform float st_enteringSide;     // directional: the map's side (index units)
+
+// One slice toward the light, in the direction `toward` (world): the step in sweep
+// texels (z = +-1), in grid texels, and its length in the world. A light nearly in a
+// slice's plane would shift sideways without bound: at most 4 texels per step.
+void st_stepTowardLight(vec3 toward, out vec3 stepSweep, out vec3 stepGrid, out float len)
+{
+  vec3 ds = st_toSweep * (st_worldToGrid * toward);
+  float along = max(abs(ds.z), length(ds.xy) / 4.0);
+  stepSweep = ds / max(along, 1.0e-20);
+  stepSweep.z = sign(ds.z);
+  stepGrid = transpose(st_toSweep) * stepSweep;
+  len = length(st_gridToWorld * stepGrid);
+}
+
+// A directional light's shift of slice z, e(z) = round(z a) - z a, with z the global
+// slice index and a the sideways step per slice (stepSweep.xy * stepSweep.z).
+vec2 st_sliceShift(float z, vec2 a)
+{
+  vec2 za = vec2(z + st_sliceOrigin) * a;
+  return floor(za + 0.5) - za;
+}
+
+// The optical depth of the step from texel j (grid) toward the light: tau over the whole
+// step, tauHalf over its part inside the texel (from the texel's face toward the light,
+// halfway, to j).
+void st_stepDepth(vec3 j, vec3 stepGrid, float len, out float tau, out float tauHalf)
+{
+  tau = 0.0;
+  tauHalf = 0.0;
+  for (int i = 0; i < st_substeps; ++i)
+  {
+    float f = (float(i) + 0.5) / float(st_substeps);
+    float a = st_attenuationAt(st_gridToTexture(j + stepGrid * f));
+    tau += a;
+    tauHalf += f < 0.5 ? a : (f == 0.5 ? 0.5 * a : 0.0); // a sample on the face: half
+  }
+  tau *= len / float(st_substeps);
+  tauHalf *= len / float(st_substeps);
+}
+
+// The texel's mean light over the light entering it at q, T_q:
+//   (T_in + T_out) / 2 = T_q exp(-tau) cosh(tauHalf)
+// written with exponents <= 0 (tauHalf <= tau): T cosh(tauHalf) overflows to 0 * inf in
+// opaque voxels hundreds of mean free paths deep. This is that factor, without T_q.
+float st_meanFactor(float tau, float tauHalf)
+{
+  return 0.5 * (exp(tauHalf - tau) + exp(-tauHalf - tau));
+}
+
+// The program comes in one variant per kind of light (ScattererTransportPrograms.cxx):
+// ST_SWEEP_ENTERING, the depth in front of a piece: 0 none, 1 a directional map, 2 a
+// positional (octahedral) one. Mirrors scatterer::lightspace::Map::coordinate.
+vec2 st_octahedral(vec3 d)
+{
+  vec2 p = d.xy / (abs(d.x) + abs(d.y) + abs(d.z));
+  if (d.z < 0.0)
+  {
+    vec2 s = vec2(p.x >= 0.0 ? 1.0 : -1.0, p.y >= 0.0 ? 1.0 : -1.0);
+    p = (vec2(1.0) - abs(p.yx)) * s;
+  }
+  return p;
+}
+
+// The optical depth in front of this piece on the light's line through index i.
+float st_depthInFront(vec3 i)
+{
+#if ST_SWEEP_ENTERING == 0
+  return 0.0;
+#else
+#if ST_SWEEP_ENTERING == 2
+  vec3 d = i - st_enteringLight;
+  vec2 c = st_octahedral(length(d) > 0.0 ? normalize(d) : vec3(0.0, 0.0, 1.0)) * 0.5 + vec2(0.5);
+#else
+  vec2 c = (vec2(dot(i, st_enteringU), dot(i, st_enteringV)) - st_enteringLo) / st_enteringSide;
+#endif
+  return texture(st_enteringDepth, c).r;
+#endif
+}
+
+// What the transmittance texture holds for the texel of grid position j: its mean
+// light, times the light the pieces in front of it leave.
+float st_storedTransmittance(float Tmean, vec3 j)
+{
+  vec3 index = (st_texToIndex * vec4(st_gridToTexture(j), 1.0)).xyz;
+  return Tmean * exp(-st_depthInFront(index));
+}
