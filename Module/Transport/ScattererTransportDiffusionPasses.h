@@ -22,7 +22,7 @@ int DiffusionIterations(const vtkScattererTransportVolume::Inputs& inputs);
  * Adds the multiply scattered light and the occluded ambient light to
  * pass.Textures.Light:
  * - pass 3a (scatterer_transport_source.glsl): the source S = sigma_s A (A the light
- *   arriving unscattered, the direct light swept last, by @p plan) on the coarse grid,
+ *   arriving unscattered, or the direct light, swept by @p plan) on the coarse grid,
  *   the mean over a block of fine texels;
  * - pass 3b (scatterer_transport_diffuse.glsl), DiffusionIterations() Jacobi iterations of
  *     -div(D grad phi) + sigma_a phi = S,   D = 1 / (3 sigma_t),  sigma_a = sigma_t (1 - albedo)

@@ -158,8 +158,9 @@ void DrawLines(const TransportPass& pass, vtkShaderProgram* program, vtkOpenGLQu
 }
 
 bool SweepTransmittance(const TransportPass& pass, const vtkScattererTransportVolume::Light& light,
-  SweepPlan& swept, std::string& why)
+  SweepOutput output, SweepPlan& swept, bool& summed, std::string& why)
 {
+  summed = false;
   TransportTextures& textures = pass.Textures;
   const SweepPlan plan = PlanSweep(pass.Grid, light);
   int sweepDims[3];
@@ -187,8 +188,9 @@ bool SweepTransmittance(const TransportPass& pass, const vtkScattererTransportVo
   // (and for positional lights, whose lines diverge) slice by slice.
   vtkOpenGLQuadHelper* lines = nullptr;
   vtkOpenGLQuadHelper* mean = nullptr;
+  const bool arriving = output != SweepOutput::Transmittance;
   if (!light.Positional && pass.SweepLinesInParallel &&
-    pass.Programs.SweepLines(pass.Window, enteringKind, lines, mean))
+    pass.Programs.SweepLines(pass.Window, enteringKind, arriving, lines, mean))
   {
     const LineRange range = LinesOf(pass.Grid, plan, light, 0, sweepDims[2]);
     if (!textures.AllocateLines(pass.Window, sweepDims, range.Count, why))
@@ -203,8 +205,26 @@ bool SweepTransmittance(const TransportPass& pass, const vtkScattererTransportVo
     vtkShaderProgram* program = UseProgram(pass.Window, mean);
     SweepBindings bindings(program, pass, light, plan, sweepDims, enteringTexture, enteringMap);
     ScopedSampler carried(program, "st_lines", textures.Lines);
-    pass.Window->GetState()->vtkglViewport(0, 0, sweepDims[0], sweepDims[1]);
-    DrawLayers(pass.Framebuffer, mean, program, { textures.Transmittance }, sweepDims[2]);
+    vtkOpenGLState* state = pass.Window->GetState();
+    if (arriving)
+    {
+      // The arriving light has one texel more than the grid on each side; the lights
+      // add up: the first replaces, the others blend on.
+      program->SetUniform3f("st_lightColor", light.Color);
+      state->vtkglViewport(0, 0, pass.Grid.Dims[0] + 2, pass.Grid.Dims[1] + 2);
+      if (output == SweepOutput::ArrivingAdded)
+      {
+        BlendAdditively(state);
+      }
+      DrawLayers(pass.Framebuffer, mean, program, { textures.Arriving }, pass.Grid.Dims[2] + 2);
+      state->vtkglDisable(GL_BLEND);
+      summed = true;
+    }
+    else
+    {
+      state->vtkglViewport(0, 0, sweepDims[0], sweepDims[1]);
+      DrawLayers(pass.Framebuffer, mean, program, { textures.Transmittance }, sweepDims[2]);
+    }
     pass.Progress.StepDone();
   }
   else
@@ -226,14 +246,7 @@ bool SweepTransmittance(const TransportPass& pass, const vtkScattererTransportVo
 
 int DirectLight(const vtkScattererTransportVolume::Inputs& in)
 {
-  for (int l = static_cast<int>(in.Lights.size()) - 1; l >= 0; --l)
-  {
-    if (!in.Lights[static_cast<size_t>(l)].Positional)
-    {
-      return l;
-    }
-  }
-  return -1;
+  return in.Lights.size() == 1 && !in.Lights.front().Positional ? 0 : -1;
 }
 
 bool HasArrivingLights(const vtkScattererTransportVolume::Inputs& in)

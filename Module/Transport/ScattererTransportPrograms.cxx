@@ -153,7 +153,7 @@ vtkOpenGLQuadHelper* TransportPrograms::Sweep(
   return sweep.get();
 }
 
-bool TransportPrograms::SweepLines(vtkOpenGLRenderWindow* window, int entering,
+bool TransportPrograms::SweepLines(vtkOpenGLRenderWindow* window, int entering, bool arriving,
   vtkOpenGLQuadHelper*& lines, vtkOpenGLQuadHelper*& mean)
 {
   if (this->LinesRefused || entering < 0 || entering > 1)
@@ -179,11 +179,13 @@ bool TransportPrograms::SweepLines(vtkOpenGLRenderWindow* window, int entering,
       vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(),
       WithCommon(scatterer_transport_lines, defines(0)).c_str(), ""));
   }
-  std::unique_ptr<vtkOpenGLQuadHelper>& lineMean = this->LineMeans[entering];
+  std::unique_ptr<vtkOpenGLQuadHelper>& lineMean = this->LineMeans[2 * entering + arriving];
   if (!lineMean)
   {
+    const std::string meanDefines =
+      defines(entering) + "#define ST_LINE_MEAN_ARRIVING " + (arriving ? "1\n" : "0\n");
     lineMean.reset(new vtkOpenGLQuadHelper(window, scatterer_transport_layers_vs,
-      WithCommon(scatterer_transport_line_mean, defines(entering)).c_str(),
+      WithCommon(scatterer_transport_line_mean, meanDefines).c_str(),
       scatterer_transport_layers_gs));
   }
   if (!this->Lines->Program || !lineMean->Program)

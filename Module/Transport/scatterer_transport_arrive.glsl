@@ -4,8 +4,8 @@
 // Light transport volume, pass 2a: one light's share of the light arriving
 // unscattered, E_l a_l T_l (scatterer_transport_arriving.glsl), at each texel of the
 // grid and of one texel more on each side (all layers in one draw per light, the lights
-// added up by blending). Every light but a directional one read directly
-// (ST_DIRECT_LIGHT) passes here.
+// added up by blending). Positional lights pass here, and directional ones swept slice
+// by slice in a build of several lights (scatterer_transport_arriving.glsl).
 //============================================================================
 //VTK::Transport::Common
 in vec2 texCoord;

@@ -7,12 +7,15 @@
 // The template gather (pass 2b) and the source of multiple scattering (pass 3a) are
 // linear in each T_l with weights that do not depend on the light, so each reads A
 // once for all lights instead of T_l once per light.
-// - ST_ARRIVING: pass 2a (scatterer_transport_arrive.glsl) summed the lights it took
-//   into st_arriving, whose texture has one texel more than the grid on each side,
-//   where the light has crossed no matter (T_l = 1, as the transmittance's border).
-// - ST_DIRECT_LIGHT: one directional light (a_l = 1), swept last, is read here from
-//   its transmittance, so that one light costs no pass 2a. Interpolating E_l T_l is
-//   interpolating T_l, so A is the same either way.
+// - ST_ARRIVING (a build of several lights, or of one positional light): the lights
+//   are summed into st_arriving, whose texture has one texel more than the grid on each
+//   side, where the light has crossed no matter (T_l = 1, as the transmittance's
+//   border): by pass 2a (scatterer_transport_arrive.glsl) from a light's transmittance,
+//   or, for a directional light swept in parallel, by its own mean draw
+//   (scatterer_transport_line_mean.glsl). Then the passes read one texture per photon.
+// - ST_DIRECT_LIGHT (a build of one directional light, a_l = 1): it is read here from
+//   its transmittance, so that it costs no texture of the arriving light. Interpolating
+//   E_l T_l is interpolating T_l, so A is the same either way.
 //============================================================================
 uniform sampler3D st_arriving;      // the lights of pass 2a, grid order
 uniform sampler3D st_transmittance; // the direct light's T, sweep order (st_toSweep)

@@ -6,28 +6,52 @@
 // (scatterer_transport_lines.glsl): the light entering it, read from the slice before
 // at q + e(z_q) where that slice holds T(q), times its mean factor; as
 // scatterer_transport_sweep.glsl computes it slice by slice.
+//
+// The value of a texel depends on nothing but the lines, so the draw may take the
+// texels in any order. ST_LINE_MEAN_ARRIVING:
+// - 0: into the transmittance texture, sweep order (the direct light, tests);
+// - 1: the light's share of the light arriving, E_l T_l, straight into the arriving
+//   light (grid order, one texel more a side, where T = 1; the lights added up by
+//   blending): what pass 2a (scatterer_transport_arrive.glsl) computes for a
+//   directional light from the transmittance texture, without that texture and pass.
 //============================================================================
 //VTK::Transport::Common
 //VTK::Transport::Sweep
 in vec2 texCoord;
 uniform sampler3D st_lines;      // per texel (T, mean factor), sweep order; its border reads 1
-flat in float st_layer;          // this layer, the slice (scatterer_transport_layers_gs.glsl)
+flat in float st_layer;          // this layer (scatterer_transport_layers_gs.glsl)
 uniform vec3 st_lightToward;     // unit vector toward the light (world)
+uniform vec3 st_lightColor;      // ST_LINE_MEAN_ARRIVING: E_l
 uniform float st_firstSlice;     // the sweep's first slice (nearest the light): T = 1
+
+// The mean light of the texel at sweep position js (a texel of the grid).
+float st_lineMean(vec3 js)
+{
+  if (js.z == st_firstSlice)
+  {
+    return 1.0;
+  }
+  vec3 stepSweep, stepGrid;
+  float len;
+  st_stepTowardLight(st_lightToward, stepSweep, stepGrid, len);
+  vec3 qs = js + stepSweep;
+  vec2 eq = st_sliceShift(qs.z, stepSweep.xy * stepSweep.z);
+  float Tq = texture(st_lines, (vec3(qs.xy + eq, qs.z) + vec3(0.5)) / st_sweepDims).r;
+  return Tq * texelFetch(st_lines, ivec3(js), 0).g;
+}
 
 void main()
 {
-  vec3 js = vec3(floor(texCoord * st_sweepDims.xy), st_layer);
-  float Tmean = 1.0;
-  if (js.z != st_firstSlice)
+#if ST_LINE_MEAN_ARRIVING
+  vec3 j = vec3(floor(texCoord * (st_gridDims.xy + 2.0)), st_layer) - vec3(1.0);
+  float T = 1.0; // outside the grid the light has crossed no matter
+  if (all(greaterThanEqual(j, vec3(0.0))) && all(lessThan(j, st_gridDims)))
   {
-    vec3 stepSweep, stepGrid;
-    float len;
-    st_stepTowardLight(st_lightToward, stepSweep, stepGrid, len);
-    vec3 qs = js + stepSweep;
-    vec2 eq = st_sliceShift(qs.z, stepSweep.xy * stepSweep.z);
-    float Tq = texture(st_lines, (vec3(qs.xy + eq, qs.z) + vec3(0.5)) / st_sweepDims).r;
-    Tmean = Tq * texelFetch(st_lines, ivec3(js), 0).g;
+    T = st_storedTransmittance(st_lineMean(st_toSweep * j), j);
   }
-  gl_FragData[0] = vec4(st_storedTransmittance(Tmean, transpose(st_toSweep) * js));
+  gl_FragData[0] = vec4(st_lightColor * T, 1.0);
+#else
+  vec3 js = vec3(floor(texCoord * st_sweepDims.xy), st_layer);
+  gl_FragData[0] = vec4(st_storedTransmittance(st_lineMean(js), transpose(st_toSweep) * js));
+#endif
 }

@@ -73,10 +73,13 @@ struct vtkScattererTransportVolume::vtkInternals
       this->Textures, this->Progress, this->SweepLinesInParallel };
   }
 
-  /** Sweeps @p light's transmittance; CurrentPlan is its plan if it succeeds. */
-  bool Sweep(const Inputs& in, const Light& light, std::string& why)
+  /** Sweeps @p light's transmittance into @p output; CurrentPlan is its plan if it
+   * succeeds, and @p summed says whether its light is in the arriving light. */
+  bool Sweep(const Inputs& in, const Light& light, scatterer_gpu::SweepOutput output, bool& summed,
+    std::string& why)
   {
-    return scatterer_gpu::SweepTransmittance(this->Pass(in), light, this->CurrentPlan, why);
+    return scatterer_gpu::SweepTransmittance(
+      this->Pass(in), light, output, this->CurrentPlan, summed, why);
   }
 
   /** Runs the passes of a build, timing its stages into LastStages (each waiting for
@@ -86,7 +89,7 @@ struct vtkScattererTransportVolume::vtkInternals
 };
 
 // The passes of one build: the medium's when it changed, per light its sweep and the
-// light it brings (the direct light last, read by the gather from its transmittance),
+// light it brings (the direct light, alone, read by the gather from its transmittance),
 // then the template gather of them all, then the diffusion.
 bool vtkScattererTransportVolume::vtkInternals::RunPasses(
   const Inputs& in, bool synchronous, std::string& why)
@@ -139,12 +142,17 @@ bool vtkScattererTransportVolume::vtkInternals::RunPasses(
   const auto sweep = [&](int l)
   {
     this->Context->GetState()->vtkglDisable(GL_BLEND);
-    ok = this->Sweep(in, in.Lights[static_cast<size_t>(l)], why);
+    using scatterer_gpu::SweepOutput;
+    const SweepOutput output = l == direct ? SweepOutput::Transmittance
+      : swept == 0                         ? SweepOutput::ArrivingFirst
+                                           : SweepOutput::ArrivingAdded;
+    bool summed = false;
+    ok = this->Sweep(in, in.Lights[static_cast<size_t>(l)], output, summed, why);
     lap(this->LastStages.Sweeps);
     if (ok)
     {
       this->Progress.SweepDone(swept);
-      if (l != direct)
+      if (l != direct && !summed)
       {
         scatterer_gpu::AddArrivingLight(
           pass, in.Lights[static_cast<size_t>(l)], this->CurrentPlan, swept == 0);
@@ -286,7 +294,9 @@ std::vector<float> vtkScattererTransportVolume::ReadTransmittance(
   s.SweepLinesInParallel = this->SweepLinesInParallel;
   {
     scatterer_gpu::TransportPassState state(window, s.Framebuffer);
-    ok = s.Sweep(s.Last, s.Last.Lights[static_cast<size_t>(light)], why);
+    bool summed = false;
+    ok = s.Sweep(s.Last, s.Last.Lights[static_cast<size_t>(light)],
+      scatterer_gpu::SweepOutput::Transmittance, summed, why);
   }
   s.HasKey = false; // the transmittance texture now holds this light alone
   if (!ok)

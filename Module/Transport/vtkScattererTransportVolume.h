@@ -206,7 +206,7 @@ public:
   {
     double Medium = 0.0;    ///< what no light changes (only when the medium changed)
     double Sweeps = 0.0;    ///< the lights' transmittance sweeps (pass 1)
-    double Arriving = 0.0;  ///< the light each but the direct light brings (pass 2a)
+    double Arriving = 0.0;  ///< the light lights swept slice by slice bring (pass 2a)
     double Gather = 0.0;    ///< the template in-scattering (pass 2b)
     double Diffusion = 0.0; ///< multiple scattering and the ambient term (passes 3a-4)
   };
@@ -226,8 +226,8 @@ public:
    * clipping, cropping, the materials or the grid change, not when a light moves. */
   int GetMediumBuildCount() const;
 
-  /** GPU bytes held: the light and source textures, the transmittance, the slices, the diffusion
-   * grids. */
+  /** GPU bytes held: the light and source textures, the transmittance, the slices, a
+   * directional light's lines, the diffusion grids. */
   size_t GetGPUBytes() const;
 
   /**
