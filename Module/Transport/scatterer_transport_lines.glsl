@@ -3,8 +3,8 @@
 //VTK::Output::Dec
 //============================================================================
 // Light transport volume, pass 1 for a directional light, its lines in parallel
-// (one draw): what scatterer_transport_sweep.glsl computes slice after slice, one
-// draw per slice, each fragment here computes along one line through all slices.
+// (a few draws): what scatterer_transport_sweep.glsl computes slice after slice, one
+// draw per slice, each fragment here computes along one line through the slices.
 //
 // The slices carry the light along lines that keep to whole texels (the top of
 // scatterer_transport_sweep.glsl): texel c of slice z takes the light of texel
@@ -20,9 +20,9 @@
 // (interpolated at q + e(z_q)), so a second, layered draw computes it
 // (scatterer_transport_line_mean.glsl). The lines go st_chunkSlices slices a draw, each
 // draw taking up T where the one before left it (st_lineStart) and covering only the
-// lines with a texel in the grid in its slices: an oblique light's lines that cross the
-// grid in all slices together are half again as many as a slice's texels (measured: 2.5
-// times at 511x511x215), and a draw of them all would run the others idle. A handful of
+// lines with a texel in the grid in its slices: the lines of an oblique light that cross
+// the grid somewhere are several times a slice's texels (2.5 times at 511x511x215 under
+// the benchmark's headlight), and a draw of them all ran most of them idle. A handful of
 // draws per light instead of one per slice: on a GPU a draw costs more than a slice's
 // fragments.
 //============================================================================
@@ -61,8 +61,7 @@ void main()
   for (int i = st_chunkFirst; i < end; ++i)
   {
     float z = st_firstSlice + float(i) * away;
-    vec2 c = k + st_sliceShift(z, a) + vec2(z + st_sliceOrigin) * a; // k + round(z a)
-    c = floor(c + 0.5);
+    vec2 c = k + floor(vec2(z + st_sliceOrigin) * a + 0.5); // k + round(z a), as st_sliceShift
     if (any(lessThan(c, vec2(0.0))) || any(greaterThanEqual(c, st_sweepDims.xy)))
     {
       T = 1.0; // outside the grid the light has crossed no matter
