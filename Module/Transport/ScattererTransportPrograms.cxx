@@ -77,7 +77,8 @@ std::string TransportPrograms::Variant(const vtkScattererTransportVolume::Inputs
     "\n#define ST_MATERIAL_COMPONENT " + std::to_string(in.MaterialComponent) +
     "\n#define ST_MAX_MATERIALS " + std::to_string(scatterer_scene::kMaxMaterials) +
     "\n#define ST_MASK " + std::to_string(mask) + "\n#define ST_CROPPING " +
-    std::to_string(in.Cropping ? 1 : 0) + "\n#define ST_PARTS " +
+    std::to_string(in.Cropping ? 1 : 0) + "\n#define ST_CLIPPING " +
+    std::to_string(in.ClipPlanes.size() >= 4 ? 1 : 0) + "\n#define ST_PARTS " +
     std::to_string(std::max<size_t>(1, in.Parts.size())) + "\n#define ST_DIRECT_LIGHT " +
     std::to_string(DirectLight(in) >= 0 ? 1 : 0) + "\n#define ST_ARRIVING " +
     std::to_string(HasArrivingLights(in) ? 1 : 0) + "\n";

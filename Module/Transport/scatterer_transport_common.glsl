@@ -39,10 +39,12 @@ uniform float st_mediumRows;       // rows of st_medium (1, or 256 with a label-
 // program defines ST_COMPONENT_MODE (the rule) and ST_MATERIAL_COMPONENT (the component
 // the material table is over) in front of this text (ScattererTransportPrograms.cxx):
 // one program per rule, so that one scalar pays nothing for the others. So are
-// ST_MASK (ST_NO_MASK, ST_BINARY_MASK, ST_LABEL_MASK) and ST_CROPPING (0, 1): a branch
-// on a uniform does not spare what it skips on Mesa's llvmpipe, which runs both sides
-// for a whole group of pixels. With these and the sweep's own variants (the light's
-// kind) a sweep of the CT head, which has no mask, went from 97 to 52 ms on 2 cores.
+// ST_MASK (ST_NO_MASK, ST_BINARY_MASK, ST_LABEL_MASK), ST_CROPPING (0, 1) and
+// ST_CLIPPING (0, 1: clipping planes): a branch on a uniform does not spare what it
+// skips on Mesa's llvmpipe, which runs both sides for a whole group of pixels. With
+// these and the sweep's own variants (the light's kind) a sweep of the CT head, which
+// has no mask, went from 97 to 52 ms on 2 cores; without clipping planes the clipping
+// test (a world position per sample) cost a sweep another fifth.
 #define ST_ONE_SCALAR 0
 #define ST_INDEPENDENT 1
 #define ST_LUMINANCE_ALPHA 2
@@ -84,6 +86,7 @@ bool st_kept(vec3 t)
     return false;
   }
 #endif
+#if ST_CLIPPING
   vec4 world = st_texToWorld * vec4(t, 1.0);
   for (int i = 0; i < st_clipCount; ++i)
   {
@@ -92,6 +95,7 @@ bool st_kept(vec3 t)
       return false;
     }
   }
+#endif
 #if ST_CROPPING
   vec3 d = (st_texToDataset * vec4(t, 1.0)).xyz;
   ivec3 r = ivec3(step(st_cropMin, d)) + ivec3(step(st_cropMax, d));
