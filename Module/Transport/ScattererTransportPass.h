@@ -27,7 +27,7 @@ struct TransportPass
   const TransportTables& Tables;
   TransportTextures& Textures; ///< the targets, allocated by the passes as they need
   TransportProgress& Progress;
-  /// A directional light's lines in two draws where the implementation can
+  /// A directional light's lines swept in parallel where the implementation can
   /// (vtkScattererTransportVolume::SweepLinesInParallel)
   bool SweepLinesInParallel = true;
 };

@@ -204,9 +204,11 @@ public:
   /** Where a rebuild's time goes, in milliseconds per stage. */
   struct StageMilliseconds
   {
-    double Medium = 0.0;    ///< what no light changes (only when the medium changed)
-    double Sweeps = 0.0;    ///< the lights' transmittance sweeps (pass 1)
-    double Arriving = 0.0;  ///< the light lights swept slice by slice bring (pass 2a)
+    double Medium = 0.0; ///< what no light changes (only when the medium changed)
+    double Sweeps = 0.0; ///< the lights' transmittance sweeps (pass 1)
+    /// the light that lights swept slice by slice bring (pass 2a; a directional light
+    /// swept in parallel adds its own in its sweep)
+    double Arriving = 0.0;
     double Gather = 0.0;    ///< the template in-scattering (pass 2b)
     double Diffusion = 0.0; ///< multiple scattering and the ambient term (passes 3a-4)
   };
@@ -267,8 +269,9 @@ public:
 
   ///@{
   /**
-   * Sweep a directional light's lines in parallel, in two draws (image load/store;
-   * scatterer_transport_lines.glsl), rather than one draw per slice
+   * Sweep a directional light's lines in parallel, 16 slices a draw, then one draw for
+   * the texels' mean (image load/store; scatterer_transport_lines.glsl), rather than one
+   * draw per slice
    * (scatterer_transport_sweep.glsl). Both compute the same transmittance; the slice
    * sweep serves positional lights, and directional ones where the OpenGL implementation
    * has no image load/store (before 4.2, as on macOS). Default on; off for tests and A/B
