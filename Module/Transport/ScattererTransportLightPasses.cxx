@@ -128,6 +128,8 @@ void DrawLines(const TransportPass& pass, vtkShaderProgram* program, vtkOpenGLQu
   program->SetUniform2f("st_lineOrigin", origin);
   program->SetUniformi("st_chunkSlices", kLineSlices);
   program->SetUniformi("st_lines", 0); // image unit 0
+  // The mean's draw of the light before read Lines: its reads come before these stores.
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
   glBindImageTexture(0, textures.Lines->GetHandle(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG16F);
   pass.Framebuffer->ActivateDrawBuffers(1);
   // No line was left anywhere yet: step -1 matches no draw.
