@@ -794,10 +794,13 @@ TEST(TransportVolume, GreyColourFunctionIsLitWithTheColoursTheRayCasterShows)
 TEST(TransportVolume, LightsAddUpWhateverTheirOrder)
 {
   // Every term of the light is linear in each light's transmittance with weights that do
-  // not depend on the light, so the lights add up: the build sums the light each one
-  // but the last brings (scatterer_transport_arrive.glsl) and reads the last one's from
-  // its transmittance. Three lights give the sum of each alone, in any order: a spot
-  // light's cone and attenuation count the same first or last.
+  // not depend on the light, so the lights add up: a build of several lights sums the
+  // light each brings (a directional light swept in parallel in its own mean draw,
+  // scatterer_transport_line_mean.glsl, the others by scatterer_transport_arrive.glsl), a
+  // build of one directional light reads it from its transmittance. Three lights give
+  // the sum of each alone, in any order: a spot light's cone and attenuation count the
+  // same first or last. Both with the directional lights' lines swept in parallel and
+  // slice by slice (OpenGL without image load/store).
   const int n = 24;
   auto image = MakeVolume(n, 1.0, Slab(6, 17));
   const double c = 0.5 * (n - 1);
@@ -820,39 +823,44 @@ TEST(TransportVolume, LightsAddUpWhateverTheirOrder)
   spot->SetColor(0.3, 0.9, 0.4);
   const std::vector<vtkSmartPointer<vtkLight>> lights = { directional(0, 0, 1, 1.0, 0.6, 0.3), spot,
     directional(1, 0.5, 1, 0.2, 0.4, 1.0) };
-  const auto lightWith = [&image](const std::vector<vtkLight*>& on)
+  for (bool parallel : { true, false })
   {
-    TransportScene scene(image, 0.3);
-    scene.Renderer->RemoveAllLights();
-    for (vtkLight* light : on)
+    const auto lightWith = [&image, parallel](const std::vector<vtkLight*>& on)
     {
-      scene.Renderer->AddLight(light);
+      TransportScene scene(image, 0.3);
+      scene.Mapper->GetTransportVolume()->SetSweepLinesInParallel(parallel);
+      scene.Renderer->RemoveAllLights();
+      for (vtkLight* light : on)
+      {
+        scene.Renderer->AddLight(light);
+      }
+      return scene.ReceivedLight();
+    };
+    const auto first = lightWith({ lights[0] }), second = lightWith({ lights[1] }),
+               third = lightWith({ lights[2] });
+    const auto all = lightWith({ lights[0], lights[1], lights[2] });
+    const auto reordered = lightWith({ lights[1], lights[2], lights[0] });
+    ASSERT_FALSE(all.empty());
+    for (const auto* alone : { &first, &second, &third, &reordered })
+    {
+      ASSERT_EQ(alone->size(), all.size());
     }
-    return scene.ReceivedLight();
-  };
-  const auto first = lightWith({ lights[0] }), second = lightWith({ lights[1] }),
-             third = lightWith({ lights[2] });
-  const auto all = lightWith({ lights[0], lights[1], lights[2] });
-  const auto reordered = lightWith({ lights[1], lights[2], lights[0] });
-  ASSERT_FALSE(all.empty());
-  for (const auto* alone : { &first, &second, &third, &reordered })
-  {
-    ASSERT_EQ(alone->size(), all.size());
+    float largest = 0.0f, vsSum = 0.0f, vsReordered = 0.0f, spotShare = 0.0f;
+    for (size_t i = 0; i < all.size(); ++i)
+    {
+      largest = std::max(largest, all[i]);
+      vsSum = std::max(vsSum, std::abs(all[i] - (first[i] + second[i] + third[i])));
+      vsReordered = std::max(vsReordered, std::abs(all[i] - reordered[i]));
+      spotShare = std::max(spotShare, second[i]);
+    }
+    std::printf("%s: largest %g; three lights vs the sum of each alone: %g; vs reordered: %g\n",
+      parallel ? "lines in parallel" : "slice by slice", largest, vsSum, vsReordered);
+    ASSERT_GT(spotShare, 0.05f * largest) << "the spot light adds nothing: the test sees little";
+    // Half-float textures: about 1e-3 of the value each.
+    EXPECT_LT(vsSum, 4e-3f * largest) << "the lights do not add up (parallel " << parallel << ")";
+    EXPECT_LT(vsReordered, 4e-3f * largest)
+      << "the order of the lights changes the light (parallel " << parallel << ")";
   }
-  float largest = 0.0f, vsSum = 0.0f, vsReordered = 0.0f, spotShare = 0.0f;
-  for (size_t i = 0; i < all.size(); ++i)
-  {
-    largest = std::max(largest, all[i]);
-    vsSum = std::max(vsSum, std::abs(all[i] - (first[i] + second[i] + third[i])));
-    vsReordered = std::max(vsReordered, std::abs(all[i] - reordered[i]));
-    spotShare = std::max(spotShare, second[i]);
-  }
-  std::printf("largest %g; three lights vs the sum of each alone: %g; vs reordered: %g\n", largest,
-    vsSum, vsReordered);
-  ASSERT_GT(spotShare, 0.05f * largest) << "the spot light adds nothing: the test sees little";
-  // Half-float textures: about 1e-3 of the value each.
-  EXPECT_LT(vsSum, 4e-3f * largest) << "the lights do not add up";
-  EXPECT_LT(vsReordered, 4e-3f * largest) << "the order of the lights changes the light";
 }
 
 TEST(TransportVolume, PhotonsPastTheGridSeeTheLightUnattenuated)
