@@ -117,13 +117,14 @@ void DrawSlices(const TransportPass& pass, vtkOpenGLQuadHelper* quad, vtkShaderP
 // A directional light's lines swept in parallel (scatterer_transport_lines.glsl, into
 // Lines by image store), kLineSlices slices a draw, each draw over the lines with a
 // texel in the grid in its slices.
+// @p all: the lines of all the slices (LinesOf), the lines' textures allocated for them.
 void DrawLines(const TransportPass& pass, vtkShaderProgram* program, vtkOpenGLQuadHelper* lines,
-  const vtkScattererTransportVolume::Light& light, const SweepPlan& plan, const int sweepDims[3])
+  const vtkScattererTransportVolume::Light& light, const SweepPlan& plan, const int sweepDims[3],
+  const LineRange& all)
 {
   constexpr int kLineSlices = 16;
   TransportTextures& textures = pass.Textures;
   vtkOpenGLState* state = pass.Window->GetState();
-  const LineRange all = LinesOf(pass.Grid, plan, light, 0, sweepDims[2]);
   const float origin[2] = { static_cast<float>(all.Lo[0]), static_cast<float>(all.Lo[1]) };
   program->SetUniform2f("st_lineOrigin", origin);
   program->SetUniformi("st_chunkSlices", kLineSlices);
@@ -167,10 +168,6 @@ bool SweepTransmittance(const TransportPass& pass, const vtkScattererTransportVo
   const SweepPlan plan = PlanSweep(pass.Grid, light);
   int sweepDims[3];
   plan.GetSweepDims(pass.Grid, sweepDims);
-  if (!textures.AllocateSweep(pass.Window, sweepDims, why))
-  {
-    return false;
-  }
 
   // A piece of a distributed volume: the depth in front of it (1 texel of zeros when
   // none, so the sampler is always bound).
@@ -195,14 +192,15 @@ bool SweepTransmittance(const TransportPass& pass, const vtkScattererTransportVo
     pass.Programs.SweepLines(pass.Window, enteringKind, arriving, lines, mean))
   {
     const LineRange range = LinesOf(pass.Grid, plan, light, 0, sweepDims[2]);
-    if (!textures.AllocateLines(pass.Window, sweepDims, range.Count, why))
+    if (!textures.AllocateLines(pass.Window, sweepDims, range.Count, why) ||
+      (!arriving && !textures.AllocateSweep(pass.Window, sweepDims, false, why)))
     {
       return false;
     }
     {
       vtkShaderProgram* program = UseProgram(pass.Window, lines);
       SweepBindings bindings(program, pass, light, plan, sweepDims, enteringTexture, enteringMap);
-      DrawLines(pass, program, lines, light, plan, sweepDims);
+      DrawLines(pass, program, lines, light, plan, sweepDims, range);
     }
     vtkShaderProgram* program = UseProgram(pass.Window, mean);
     SweepBindings bindings(program, pass, light, plan, sweepDims, enteringTexture, enteringMap);
@@ -233,7 +231,7 @@ bool SweepTransmittance(const TransportPass& pass, const vtkScattererTransportVo
   {
     vtkOpenGLQuadHelper* quad =
       pass.Programs.Sweep(pass.Window, light.Positional, enteringKind, why);
-    if (!quad)
+    if (!quad || !textures.AllocateSweep(pass.Window, sweepDims, true, why))
     {
       return false;
     }
@@ -258,7 +256,6 @@ bool HasArrivingLights(const vtkScattererTransportVolume::Inputs& in)
 
 ScopedArrivingLight::ScopedArrivingLight(
   vtkShaderProgram* program, const TransportPass& pass, const SweepPlan& plan)
-  : Transmittance(program, "st_transmittance", pass.Textures.Transmittance)
 {
   if (pass.Textures.Arriving)
   {
@@ -267,6 +264,8 @@ ScopedArrivingLight::ScopedArrivingLight(
   const int direct = DirectLight(pass.In);
   if (direct >= 0)
   {
+    this->Transmittance.reset(
+      new ScopedSampler(program, "st_transmittance", pass.Textures.Transmittance));
     SetSweepOrder(program, plan);
     program->SetUniform3f("st_directColor", pass.In.Lights[static_cast<size_t>(direct)].Color);
   }

@@ -51,8 +51,8 @@ public:
   ScopedArrivingLight(vtkShaderProgram* program, const TransportPass& pass, const SweepPlan& plan);
 
 private:
-  std::unique_ptr<ScopedSampler> Arriving; ///< none without lights of pass 2a
-  ScopedSampler Transmittance;
+  std::unique_ptr<ScopedSampler> Arriving;      ///< none without an arriving light
+  std::unique_ptr<ScopedSampler> Transmittance; ///< the direct light's; none without one
 };
 
 /**

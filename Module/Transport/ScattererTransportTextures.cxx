@@ -120,7 +120,7 @@ void TransportTextures::ReleaseArriving(vtkWindow* window)
 }
 
 bool TransportTextures::AllocateSweep(
-  vtkOpenGLRenderWindow* window, const int sweepDims[3], std::string& why)
+  vtkOpenGLRenderWindow* window, const int sweepDims[3], bool slices, std::string& why)
 {
   const int w = sweepDims[0], h = sweepDims[1], d = sweepDims[2];
   if (!HasSize(this->Transmittance, w, h, d))
@@ -133,7 +133,7 @@ bool TransportTextures::AllocateSweep(
       return false;
     }
   }
-  if (!HasSize(this->Slices[0], w, h, 1) || !HasSize(this->Slices[1], w, h, 1))
+  if (slices && (!HasSize(this->Slices[0], w, h, 1) || !HasSize(this->Slices[1], w, h, 1)))
   {
     for (auto& slice : this->Slices)
     {

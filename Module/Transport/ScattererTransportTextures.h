@@ -61,9 +61,12 @@ struct TransportTextures
   /** Frees Arriving (a build of one directional light does without it). */
   void ReleaseArriving(vtkWindow* window);
 
-  /** Transmittance of @p sweepDims (rows, columns, slices) and the slices; false with
-   * @p why set if refused. */
-  bool AllocateSweep(vtkOpenGLRenderWindow* window, const int sweepDims[3], std::string& why);
+  /** Transmittance of @p sweepDims (rows, columns, slices), and with @p slices the
+   * slices of the sweep one slice per draw; false with @p why set if refused. A sweep
+   * allocates only what it draws into: a light kit's lines swept in parallel need
+   * neither. */
+  bool AllocateSweep(
+    vtkOpenGLRenderWindow* window, const int sweepDims[3], bool slices, std::string& why);
 
   /** Lines of @p sweepDims and LineEnds of @p lineDims (the lines' draws); false with
    * @p why set if refused. */

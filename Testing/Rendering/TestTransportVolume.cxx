@@ -870,9 +870,10 @@ TEST(TransportVolume, PhotonsPastTheGridSeeTheLightUnattenuated)
   // has a texel more on each side for it. A slab lit from above, filling the grid
   // across: its texels at the grid's side receive more than those in its middle, whose
   // photons all lie in the slab (single scattering alone: the diffusion lets light
-  // escape past the grid, which darkens the side). A second light the same, summed by
-  // pass 2a while the first is read from its transmittance, doubles the light there too;
-  // only then is the texture of pass 2a held (one directional light does without it).
+  // escape past the grid, which darkens the side). A second light the same doubles the
+  // light there too, both summed into the arriving light (each by its lines' mean draw);
+  // only then is that texture held (one directional light does without it, and is read
+  // from its transmittance, which two lights swept in parallel do without).
   const int n = 24;
   auto image = MakeVolume(n, 1.0, Slab(6, 17));
   size_t gpuBytes[3] = { 0, 0, 0 };
@@ -893,8 +894,10 @@ TEST(TransportVolume, PhotonsPastTheGridSeeTheLightUnattenuated)
   };
   const auto one = lightWith(1), two = lightWith(2);
   const size_t arrivingBytes = 8 * static_cast<size_t>(n + 2) * (n + 2) * (n + 2); // RGBA16F
-  EXPECT_EQ(gpuBytes[2], gpuBytes[1] + arrivingBytes)
-    << "one directional light holds the texture of pass 2a, or two do not";
+  const size_t transmittanceBytes = 2 * static_cast<size_t>(n) * n * n;            // R16F
+  EXPECT_EQ(gpuBytes[2] + transmittanceBytes, gpuBytes[1] + arrivingBytes)
+    << "one directional light holds the arriving light's texture or no transmittance, or "
+       "two do not hold the first or hold the second";
   ASSERT_EQ(one.size(), static_cast<size_t>(3 * n * n * n));
   ASSERT_EQ(two.size(), one.size());
   const auto at = [n](const std::vector<float>& light, int i, int j, int k)
