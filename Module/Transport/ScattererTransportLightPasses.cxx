@@ -64,6 +64,26 @@ private:
   ScopedSampler DepthInFront;
 };
 
+// Draws @p quad (the light one light brings) into every layer of the arriving light,
+// which has one texel more than the grid on each side. The lights add up: the @p first
+// replaces what the texture holds, the others blend on.
+void DrawIntoArriving(
+  const TransportPass& pass, vtkOpenGLQuadHelper* quad, vtkShaderProgram* program, bool first)
+{
+  vtkOpenGLState* state = pass.Window->GetState();
+  state->vtkglViewport(0, 0, pass.Grid.Dims[0] + 2, pass.Grid.Dims[1] + 2);
+  if (first)
+  {
+    state->vtkglDisable(GL_BLEND);
+  }
+  else
+  {
+    BlendAdditively(state);
+  }
+  DrawLayers(pass.Framebuffer, quad, program, { pass.Textures.Arriving }, pass.Grid.Dims[2] + 2);
+  state->vtkglDisable(GL_BLEND);
+}
+
 // The sweep one slice per draw (scatterer_transport_sweep.glsl): each slice is drawn
 // into one slice texture, reading the other (the slice before it), and copied into its
 // layer of the transmittance texture (a second output).
@@ -205,24 +225,15 @@ bool SweepTransmittance(const TransportPass& pass, const vtkScattererTransportVo
     vtkShaderProgram* program = UseProgram(pass.Window, mean);
     SweepBindings bindings(program, pass, light, plan, sweepDims, enteringTexture, enteringMap);
     ScopedSampler carried(program, "st_lines", textures.Lines);
-    vtkOpenGLState* state = pass.Window->GetState();
     if (arriving)
     {
-      // The arriving light has one texel more than the grid on each side; the lights
-      // add up: the first replaces, the others blend on.
       program->SetUniform3f("st_lightColor", light.Color);
-      state->vtkglViewport(0, 0, pass.Grid.Dims[0] + 2, pass.Grid.Dims[1] + 2);
-      if (output == SweepOutput::ArrivingAdded)
-      {
-        BlendAdditively(state);
-      }
-      DrawLayers(pass.Framebuffer, mean, program, { textures.Arriving }, pass.Grid.Dims[2] + 2);
-      state->vtkglDisable(GL_BLEND);
+      DrawIntoArriving(pass, mean, program, output == SweepOutput::ArrivingFirst);
       summed = true;
     }
     else
     {
-      state->vtkglViewport(0, 0, sweepDims[0], sweepDims[1]);
+      pass.Window->GetState()->vtkglViewport(0, 0, sweepDims[0], sweepDims[1]);
       DrawLayers(pass.Framebuffer, mean, program, { textures.Transmittance }, sweepDims[2]);
     }
     pass.Progress.StepDone();
@@ -288,20 +299,7 @@ void AddArrivingLight(const TransportPass& pass, const vtkScattererTransportVolu
   ScopedSampler transmittance(program, "st_transmittance", pass.Textures.Transmittance);
 
   // The texture has one texel more than the grid on each side (arrive.glsl).
-  vtkOpenGLState* state = pass.Window->GetState();
-  state->vtkglViewport(0, 0, pass.Grid.Dims[0] + 2, pass.Grid.Dims[1] + 2);
-  // The lights add up: the first replaces, the others blend on.
-  if (first)
-  {
-    state->vtkglDisable(GL_BLEND);
-  }
-  else
-  {
-    BlendAdditively(state);
-  }
-  DrawLayers(pass.Framebuffer, pass.Programs.Arrive.get(), program, { pass.Textures.Arriving },
-    pass.Grid.Dims[2] + 2);
-  state->vtkglDisable(GL_BLEND);
+  DrawIntoArriving(pass, pass.Programs.Arrive.get(), program, first);
 }
 
 void GatherLight(const TransportPass& pass, const SweepPlan& plan)
