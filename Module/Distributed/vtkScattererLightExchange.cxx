@@ -232,8 +232,10 @@ void vtkScattererLightExchange::Exchange(vtkRenderer* renderer, vtkVolume* volum
   // Still frames: lines one voxel apart, since a coarser map blurs the edges of the
   // shadows it carries (a 2-voxel map doubled the error of the long-shadow test's
   // composite). Interactive frames: as coarse as the transport volume is then.
+  const int wholeDims[3] = { whole[1] - whole[0] + 1, whole[3] - whole[2] + 1,
+    whole[5] - whole[4] + 1 };
   const double texel =
-    this->Interactive ? std::max(1, mapper->GetInteractiveTransportScale()) : 1.0;
+    this->Interactive ? std::max(1, mapper->GetEffectiveTransportScale(wholeDims, true)) : 1.0;
 
   // 1. Did anything change on any rank?
   scatterer_render::KeyWriter key;

@@ -29,6 +29,10 @@ struct IlluminationParameters
   int IlluminationMode = il::IlluminationMode.Default;
   int TransportScale = il::TransportScale.Default;
   int InteractiveTransportScale = il::InteractiveTransportScale.Default;
+  int MaximumTransportVoxels = il::MaximumTransportVoxels.Default;
+  /// A piece of a distributed volume: the whole volume's point dimensions (0: the input
+  /// is the whole volume).
+  int WholeDimensions[3] = { 0, 0, 0 };
   double MultipleScattering = il::MultipleScattering.Default;
   double TemplateRadius = il::TemplateRadius.Default;
   int TemplatesPerMaterial = il::TemplatesPerMaterial.Default;
@@ -42,6 +46,18 @@ struct IlluminationParameters
   double MaterialDerivationRange[2] = { 1.0, 0.0 };
 
   bool Transport() const { return this->IlluminationMode == il::Transport; }
+
+  /** The scale a transport volume is built at (MaximumTransportVoxels) for a volume of
+   * @p dims points, or for the whole volume when it is a piece of one. */
+  int TransportScaleFor(const int dims[3], bool interactive) const
+  {
+    const int* whole = this->WholeDimensions[0] > 0 ? this->WholeDimensions : dims;
+    const int still =
+      il::transportScaleFor(this->TransportScale, whole, this->MaximumTransportVoxels);
+    return interactive ? il::interactiveTransportScaleFor(
+                           this->TransportScale, this->InteractiveTransportScale, still)
+                       : still;
+  }
   bool Automatic() const { return this->ShaderPathSelection == il::Automatic; }
 };
 

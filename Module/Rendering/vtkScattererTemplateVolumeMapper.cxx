@@ -250,7 +250,9 @@ double vtkScattererTemplateVolumeMapper::GetIlluminationReach(const double spaci
   // transport voxel is interpolated by its neighbours.
   const bool thin = this->ShadowsEnabled && this->ThinPartCheckEnabled;
   const bool transport = this->IlluminationMode == TRANSPORT;
-  const int scale = std::max(this->TransportScale, this->InteractiveTransportScale);
+  const int scale = this->WholeDimensions[0] > 0
+    ? this->GetEffectiveTransportScale(this->WholeDimensions, true)
+    : std::max(this->TransportScale, this->InteractiveTransportScale);
   const double voxel = std::max({ sx, sy, sz });
   const double diffusionVoxel = std::max(4, scale) * voxel;
   const int iterations = vtkScattererTransportVolume::Inputs().DiffusionIterations;
@@ -261,6 +263,24 @@ double vtkScattererTemplateVolumeMapper::GetIlluminationReach(const double spaci
   const double gridMargin = transport ? scale * voxel : 0.0;
   const double reach = photonReach + gridMargin;
   return std::isfinite(reach) ? reach : 0.0;
+}
+
+void vtkScattererTemplateVolumeMapper::SetWholeDimensions(int nx, int ny, int nz)
+{
+  const int dims[3] = { std::max(0, nx), std::max(0, ny), std::max(0, nz) };
+  if (std::equal(dims, dims + 3, this->WholeDimensions))
+  {
+    return;
+  }
+  // No Modified(), as the settings (the class comment): the transport volume follows its key.
+  std::copy(dims, dims + 3, this->WholeDimensions);
+  this->IlluminationTime.Modified();
+}
+
+int vtkScattererTemplateVolumeMapper::GetEffectiveTransportScale(
+  const int dims[3], bool interactive) const
+{
+  return this->GatherParameters().TransportScaleFor(dims, interactive);
 }
 
 void vtkScattererTemplateVolumeMapper::SetExtraShaderCodeForTesting(const std::string& glsl)
@@ -294,6 +314,8 @@ scatterer_render::IlluminationParameters vtkScattererTemplateVolumeMapper::Gathe
   p.IlluminationMode = this->IlluminationMode;
   p.TransportScale = this->TransportScale;
   p.InteractiveTransportScale = this->InteractiveTransportScale;
+  p.MaximumTransportVoxels = this->MaximumTransportVoxels;
+  std::copy(this->WholeDimensions, this->WholeDimensions + 3, p.WholeDimensions);
   p.MultipleScattering = this->MultipleScattering;
   p.TemplateRadius = this->TemplateRadius;
   p.TemplatesPerMaterial = this->TemplatesPerMaterial;
@@ -531,6 +553,17 @@ void vtkScattererTemplateVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   {
     os << "(the data range)\n";
   }
+  os << indent
+     << "IlluminationMode: " << (this->IlluminationMode == TRANSPORT ? "Transport" : "PerSample")
+     << "\n";
+  os << indent << "TransportScale: " << this->TransportScale << "\n";
+  os << indent << "InteractiveTransportScale: " << this->InteractiveTransportScale << "\n";
+  os << indent << "MaximumTransportVoxels: " << this->MaximumTransportVoxels
+     << (this->MaximumTransportVoxels > 0 ? "" : " (no limit)") << "\n";
+  os << indent << "WholeDimensions: " << this->WholeDimensions[0] << " " << this->WholeDimensions[1]
+     << " " << this->WholeDimensions[2]
+     << (this->WholeDimensions[0] > 0 ? "" : " (the input is the whole volume)") << "\n";
+  os << indent << "MultipleScattering: " << this->MultipleScattering << "\n";
   os << indent << "TemplateRadius: " << this->TemplateRadius
      << (this->TemplateRadius > 0 ? "" : " (automatic: 10 x mean spacing)") << "\n";
   os << indent << "TemplatesPerMaterial: " << this->TemplatesPerMaterial << "\n";

@@ -183,13 +183,46 @@ public:
    * (the volume's allocated render time below 1 s, as VTK's interactor asks
    * while the user drags; default 4) that must rebuild the volume: when nothing it
    * depends on changed (orbiting under a scene light), interactive frames keep the
-   * still frames' volume. Smaller is sharper and slower.
+   * still frames' volume. Smaller is sharper and slower. A volume larger than
+   * MaximumTransportVoxels allows is built coarser.
    */
   vtkScattererSetSettingMacro(TransportScale, int);
   vtkGetMacro(TransportScale, int);
   vtkScattererSetSettingMacro(InteractiveTransportScale, int);
   vtkGetMacro(InteractiveTransportScale, int);
   ///@}
+
+  ///@{
+  /**
+   * Transport mode: the most voxels a still frame's transport volume holds (default
+   * 1048576; 0: no limit). A volume that would hold more at TransportScale is built at
+   * the smallest coarser scale that fits, and its dragging frames as much coarser
+   * again as InteractiveTransportScale asks: the light is then stored as finely in the
+   * object whatever the volume's resolution, so a resampled volume is lit as the
+   * original, and a rebuild costs about the same at every size. The CT head
+   * (256x256x108) keeps scale 2; 511x511x215 takes 4.
+   */
+  vtkScattererSetSettingMacro(MaximumTransportVoxels, int);
+  vtkGetMacro(MaximumTransportVoxels, int);
+  ///@}
+
+  ///@{
+  /**
+   * A piece of a distributed volume: the point dimensions of the whole volume (the
+   * ParaView plugin sets them from the pipeline's whole extent), so that every piece
+   * builds its transport volume at the scale the whole volume takes (the pieces'
+   * light must match). Default 0 0 0: the input is the whole volume.
+   */
+  void SetWholeDimensions(int nx, int ny, int nz);
+  const int* GetWholeDimensions() const { return this->WholeDimensions; }
+  ///@}
+
+  /**
+   * Transport mode: the scale (volume voxels per transport voxel) the transport volume of
+   * a volume of @p dims points (or of the whole volume, SetWholeDimensions) is built at,
+   * for still frames or for frames the user drags (@p interactive).
+   */
+  int GetEffectiveTransportScale(const int dims[3], bool interactive) const;
 
   ///@{
   /**
@@ -238,7 +271,8 @@ public:
    * check. Transport: the largest of the template radius (the kernel), two diffusion
    * voxels (the ambient occlusion) and one diffusion voxel per diffusion iteration
    * (multiple scattering), a diffusion voxel being max(4, scale) x the largest spacing
-   * with scale the larger of TransportScale and InteractiveTransportScale; plus one
+   * with scale the dragging frames' (GetEffectiveTransportScale for the whole
+   * dimensions; InteractiveTransportScale when they are not set); plus one
    * transport voxel. Ghost layers this wide give a piece of a distributed volume the
    * in-scattering, multiple scattering and ambient light of the whole volume; shadows
    * cast from farther away (other pieces) come in through the light exchange
@@ -426,6 +460,8 @@ protected:
   int IlluminationMode = scatterer::illumination::IlluminationMode.Default;
   int TransportScale = scatterer::illumination::TransportScale.Default;
   int InteractiveTransportScale = scatterer::illumination::InteractiveTransportScale.Default;
+  int MaximumTransportVoxels = scatterer::illumination::MaximumTransportVoxels.Default;
+  int WholeDimensions[3] = { 0, 0, 0 };
   double MultipleScattering = scatterer::illumination::MultipleScattering.Default;
   double TemplateRadius = scatterer::illumination::TemplateRadius.Default;
   int TemplatesPerMaterial = scatterer::illumination::TemplatesPerMaterial.Default;

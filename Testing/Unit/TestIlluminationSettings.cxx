@@ -28,6 +28,7 @@ TEST(IlluminationSettings, EveryDefaultLiesInItsRange)
   ExpectDefaultInRange(il::ShaderPathSelection);
   ExpectDefaultInRange(il::TransportScale);
   ExpectDefaultInRange(il::InteractiveTransportScale);
+  ExpectDefaultInRange(il::MaximumTransportVoxels);
   ExpectDefaultInRange(il::MultipleScattering);
   ExpectDefaultInRange(il::TemplateRadius);
   ExpectDefaultInRange(il::TemplatesPerMaterial);
@@ -52,6 +53,7 @@ TEST(IlluminationSettings, TheMapperAndTheGeneratorStartAtTheRecord)
   EXPECT_EQ(m->GetIlluminationMode(), il::IlluminationMode.Default);
   EXPECT_EQ(m->GetTransportScale(), il::TransportScale.Default);
   EXPECT_EQ(m->GetInteractiveTransportScale(), il::InteractiveTransportScale.Default);
+  EXPECT_EQ(m->GetMaximumTransportVoxels(), il::MaximumTransportVoxels.Default);
   EXPECT_EQ(m->GetMultipleScattering(), il::MultipleScattering.Default);
   EXPECT_EQ(m->GetTemplatesPerMaterial(), il::TemplatesPerMaterial.Default);
   EXPECT_EQ(m->GetPhotonCap(), il::PhotonCap.Default);
@@ -76,4 +78,30 @@ TEST(IlluminationSettings, TheMapperClampsToTheRecordsRanges)
   m->SetMultipleScattering(il::MultipleScattering.Maximum * 2);
   EXPECT_EQ(m->GetMultipleScattering(), il::MultipleScattering.Maximum);
   m->GlobalWarningDisplayOn();
+}
+
+// The budget of transport voxels (MaximumTransportVoxels): the CT head keeps TransportScale,
+// its resamples to 383x383x161 and 511x511x215 (the benchmark's sizes) take the scale that
+// stores their light as finely in the object (the same 129x129x55 grid), dragging frames
+// stay twice as coarse as still ones, and no budget or a small volume changes nothing.
+TEST(IlluminationSettings, ALargeVolumeIsBuiltAtTheScaleThatFitsTheBudget)
+{
+  const int budget = il::MaximumTransportVoxels.Default;
+  const int head[3] = { 256, 256, 108 }, mid[3] = { 383, 383, 161 }, big[3] = { 511, 511, 215 };
+  EXPECT_EQ(il::transportVoxelsAt(head, 2), 129LL * 129 * 55);
+  EXPECT_EQ(il::transportScaleFor(2, head, budget), 2);
+  EXPECT_EQ(il::transportScaleFor(2, mid, budget), 3);
+  EXPECT_EQ(il::transportScaleFor(2, big, budget), 4);
+  EXPECT_EQ(il::transportVoxelsAt(mid, 3), il::transportVoxelsAt(head, 2));
+  EXPECT_EQ(il::transportVoxelsAt(big, 4), il::transportVoxelsAt(head, 2));
+  EXPECT_EQ(il::interactiveTransportScaleFor(2, 4, 2), 4);
+  EXPECT_EQ(il::interactiveTransportScaleFor(2, 4, 3), 6);
+  EXPECT_EQ(il::interactiveTransportScaleFor(2, 4, 4), 8);
+  EXPECT_EQ(il::interactiveTransportScaleFor(2, 2, 4), 4); // no coarser than asked: still's
+  EXPECT_EQ(il::transportScaleFor(2, big, 0), 2);          // 0: no limit
+  const int small[3] = { 48, 48, 48 }, flat[3] = { 4000, 4000, 1 };
+  EXPECT_EQ(il::transportScaleFor(1, small, budget), 1);
+  EXPECT_LE(il::transportVoxelsAt(flat, il::transportScaleFor(1, flat, budget)), budget);
+  const int one[3] = { 1, 1, 1 };
+  EXPECT_EQ(il::transportScaleFor(3, one, 1), 3); // nothing to coarsen: it stops
 }

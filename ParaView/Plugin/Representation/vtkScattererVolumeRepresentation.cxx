@@ -156,6 +156,7 @@ vtkScattererForward(TemplateBlendingEnabled, bool);
 vtkScattererForward(IlluminationMode, int);
 vtkScattererForward(TransportScale, int);
 vtkScattererForward(InteractiveTransportScale, int);
+vtkScattererForward(MaximumTransportVoxels, int);
 vtkScattererForward(MultipleScattering, double);
 vtkScattererForward(TemplateRadius, double);
 vtkScattererForward(TemplatesPerMaterial, int);
@@ -196,6 +197,18 @@ int vtkScattererVolumeRepresentation::RequestUpdateExtent(
     if (inInfo->Has(SDDP::WHOLE_EXTENT()))
     {
       inInfo->Get(SDDP::WHOLE_EXTENT(), this->WholeExtent);
+    }
+    // Every piece builds its transport volume at the scale of the whole volume
+    // (MaximumTransportVoxels), so that the pieces' light matches.
+    const int* w = this->WholeExtent;
+    if (pieces > 1 && w[1] >= w[0] && w[3] >= w[2] && w[5] >= w[4])
+    {
+      this->GetScattererMapper()->SetWholeDimensions(
+        w[1] - w[0] + 1, w[3] - w[2] + 1, w[5] - w[4] + 1);
+    }
+    else
+    {
+      this->GetScattererMapper()->SetWholeDimensions(0, 0, 0);
     }
     if (pieces <= 1 || !inInfo->Has(vtkDataObject::SPACING()))
     {

@@ -67,6 +67,7 @@ public:
   void SetIlluminationMode(int mode);
   void SetTransportScale(int scale);
   void SetInteractiveTransportScale(int scale);
+  void SetMaximumTransportVoxels(int voxels);
   void SetMultipleScattering(double strength);
   void SetTemplateRadius(double radius);
   void SetTemplatesPerMaterial(int count);

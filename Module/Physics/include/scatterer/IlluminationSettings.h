@@ -53,6 +53,49 @@ inline constexpr Setting<int> ShaderPathSelection{ "ShaderPathSelection", Automa
 // (2: 1/8 of the voxels) and for interactive frames that must rebuild.
 inline constexpr Setting<int> TransportScale{ "TransportScale", 2, 1, 8 };
 inline constexpr Setting<int> InteractiveTransportScale{ "InteractiveTransportScale", 4, 1, 8 };
+// Transport mode: the most voxels a still frame's transport volume holds (0: no limit).
+// A volume that would have more at TransportScale is built coarser (transportScaleFor),
+// so that its light is stored as finely in the object as a smaller volume's of the same
+// object: the CT head's 256x256x108 voxels (915 k transport voxels at scale 2) keep
+// scale 2, its resamples to 383x383x161 and 511x511x215 take 3 and 4 and the same 915 k
+// voxels, and are lit as it is instead of by a finer diffusion; a rebuild then costs
+// the same at every size (docs/rendering.md).
+inline constexpr Setting<int> MaximumTransportVoxels{ "MaximumTransportVoxels", 1 << 20, 0,
+  std::numeric_limits<int>::max() };
+
+// The transport voxels of a volume of `dims` points per axis at `scale` volume voxels per
+// transport voxel: every scale-th point from the first, and the last one covered.
+inline long long transportVoxelsAt(const int dims[3], int scale)
+{
+  long long voxels = 1;
+  for (int a = 0; a < 3; ++a) {
+    const int n = dims[a] > 1 ? dims[a] : 1;
+    voxels *= n < 2 ? 1 : (n - 1 + scale - 1) / scale + 1;
+  }
+  return voxels;
+}
+
+// The scale a still frame's transport volume is built at, for a volume of `dims` points:
+// TransportScale, raised until the volume holds at most MaximumTransportVoxels.
+inline int transportScaleFor(int scale, const int dims[3], int maximumVoxels)
+{
+  int s = scale > 1 ? scale : 1;
+  const int longest = dims[0] > dims[1] ? (dims[0] > dims[2] ? dims[0] : dims[2])
+                                        : (dims[1] > dims[2] ? dims[1] : dims[2]);
+  while (maximumVoxels > 0 && s < longest && transportVoxelsAt(dims, s) > maximumVoxels) {
+    ++s;
+  }
+  return s;
+}
+
+// The scale of a frame the user drags, when the still frames' is `stillScale`: as much
+// coarser than a still frame's as InteractiveTransportScale is than TransportScale.
+inline int interactiveTransportScaleFor(int scale, int interactiveScale, int stillScale)
+{
+  const int s = scale > 1 ? scale : 1;
+  const int raised = (interactiveScale * stillScale + s - 1) / s;
+  return interactiveScale > raised ? interactiveScale : raised;
+}
 // Transport mode: strength of the diffusion term (1 physical, 0 single scattering only).
 inline constexpr Setting<double> MultipleScattering{ "MultipleScattering", 1.0, 0.0, 16.0 };
 
