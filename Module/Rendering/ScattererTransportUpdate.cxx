@@ -147,12 +147,9 @@ std::string TransportUpdate::Update(vtkRenderer* ren, vtkVolume* vol, const Fram
   // only when it must be rebuilt at all: while the user orbits under a scene light,
   // the still frames' volume stays valid, and a coarse one would cost a build now and
   // another when the user lets go.
-  // The grid lies on the volume texture, or on the box that holds a vtkMultiVolume's parts;
-  // a volume larger than MaximumTransportVoxels allows is built coarser.
-  const bool box = !t.Parts.empty();
-  const int gridDims[3] = { box ? t.BoxTexels[0] : static_cast<int>(t.Volume->GetWidth()),
-    box ? t.BoxTexels[1] : static_cast<int>(t.Volume->GetHeight()),
-    box ? t.BoxTexels[2] : static_cast<int>(t.Volume->GetDepth()) };
+  // A volume larger than MaximumTransportVoxels allows is built coarser.
+  int gridDims[3];
+  t.GetGridSourceDims(gridDims);
   t.Downsample = parameters.TransportScaleFor(gridDims, false);
   const bool interactive = vol->GetAllocatedRenderTime() < 1.0;
   if (interactive && !this->Transport->IsCurrent(renWin, t))

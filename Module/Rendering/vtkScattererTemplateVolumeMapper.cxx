@@ -251,7 +251,8 @@ double vtkScattererTemplateVolumeMapper::GetIlluminationReach(const double spaci
   const bool thin = this->ShadowsEnabled && this->ThinPartCheckEnabled;
   const bool transport = this->IlluminationMode == TRANSPORT;
   const int scale = this->WholeDimensions[0] > 0
-    ? this->GetEffectiveTransportScale(this->WholeDimensions, true)
+    ? std::max(this->GetEffectiveTransportScale(this->WholeDimensions, false),
+        this->GetEffectiveTransportScale(this->WholeDimensions, true))
     : std::max(this->TransportScale, this->InteractiveTransportScale);
   const double voxel = std::max({ sx, sy, sz });
   const double diffusionVoxel = std::max(4, scale) * voxel;

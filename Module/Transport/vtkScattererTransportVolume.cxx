@@ -211,6 +211,14 @@ bool vtkScattererTransportVolume::IsCurrent(vtkOpenGLRenderWindow* window, const
   return this->Internals->IsCurrent(window, scatterer_gpu::TransportKey(in));
 }
 
+void vtkScattererTransportVolume::Inputs::GetGridSourceDims(int dims[3]) const
+{
+  const bool box = !this->Parts.empty();
+  dims[0] = box ? this->BoxTexels[0] : static_cast<int>(this->Volume->GetWidth());
+  dims[1] = box ? this->BoxTexels[1] : static_cast<int>(this->Volume->GetHeight());
+  dims[2] = box ? this->BoxTexels[2] : static_cast<int>(this->Volume->GetDepth());
+}
+
 bool vtkScattererTransportVolume::Update(
   vtkOpenGLRenderWindow* window, const Inputs& in, std::string& why)
 {
@@ -239,10 +247,8 @@ bool vtkScattererTransportVolume::Update(
   // The stages: place the grid, compile the programs (once), allocate the light
   // texture, run the passes (the tables are uploaded with the medium's).
   // The grid lies on the volume texture, or on the box that holds a vtkMultiVolume's parts.
-  const bool box = !in.Parts.empty();
-  const int volumeDims[3] = { box ? in.BoxTexels[0] : static_cast<int>(in.Volume->GetWidth()),
-    box ? in.BoxTexels[1] : static_cast<int>(in.Volume->GetHeight()),
-    box ? in.BoxTexels[2] : static_cast<int>(in.Volume->GetDepth()) };
+  int volumeDims[3];
+  in.GetGridSourceDims(volumeDims);
   if (!s.Grid.Place(volumeDims, in.IndexOrigin, in.Downsample, in.TexToWorld))
   {
     why = "the volume's placement is degenerate (zero spacing or a singular matrix)";

@@ -177,6 +177,10 @@ public:
     bool Boundary = true;
     float MultipleScattering = 1; ///< strength of the multiple-scattering term (0: none)
     int DiffusionIterations = 8;  ///< Jacobi iterations of the diffusion solve
+
+    /** The points the grid lies on: the volume texture's, or (a vtkMultiVolume) the
+     * box's that holds the parts. */
+    void GetGridSourceDims(int dims[3]) const;
   };
 
   /**
