@@ -31,6 +31,8 @@ vtkSmartPointer<vtkGPUVolumeRayCastMapper> MakeMapper(const RenderOptions& o)
       : vtkScattererTemplateVolumeMapper::TRANSPORT);
   if (o.TransportScale > 0)
     mapper->SetTransportScale(o.TransportScale);
+  if (o.MaxTransportVoxels >= 0)
+    mapper->SetMaximumTransportVoxels(o.MaxTransportVoxels);
   if (o.Photons > 0)
     mapper->SetPhotonCap(o.Photons);
   if (o.Templates > 0)
@@ -62,6 +64,7 @@ std::string DescribeSettings(vtkGPUVolumeRayCastMapper* mapper)
       << (m->GetIlluminationMode() == vtkScattererTemplateVolumeMapper::TRANSPORT ? "transport"
                                                                                   : "per-sample")
       << " transport_scale=" << m->GetTransportScale()
+      << " max_transport_voxels=" << m->GetMaximumTransportVoxels()
       << " multiple_scattering=" << m->GetMultipleScattering() << " radius="
       << (m->GetTemplateRadius() > 0 ? std::to_string(m->GetTemplateRadius()) : "auto")
       << " templates=" << m->GetTemplatesPerMaterial() << " photons=" << m->GetPhotonCap()

@@ -30,7 +30,7 @@ struct RenderOptions
   bool Boundary = scatterer::illumination::BoundaryRefraction.Default;
   bool Blend = scatterer::illumination::TemplateBlending.Default;
   bool RequestedPaths = false; // --paths requested: every switched-on effect
-  int Photons = -1, Templates = -1, Interval = -1, TransportScale = -1;
+  int Photons = -1, Templates = -1, Interval = -1, TransportScale = -1, MaxTransportVoxels = -1;
   std::string Illumination = "transport"; // transport | per-sample
   double Radius = -1, Threshold = -1, Strength = -1, LongRange = -1, MultipleScattering = -1;
 };

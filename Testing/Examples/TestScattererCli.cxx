@@ -648,6 +648,18 @@ TEST_F(Cli, OptionEqualsValueIsAccepted)
   EXPECT_EQ(s.Height, 80) << viewer.Output;
 }
 
+// --max-transport-voxels reaches the mapper (the settings --json reports are read back
+// from it), and a budget far below the ball's transport voxels still lights it.
+TEST_F(Cli, MaxTransportVoxelsReachesTheMapper)
+{
+  const std::string input = this->WriteMetaImage("ball", Ball());
+  const std::string png = this->Png("ball-budget.png");
+  const Result r = RenderFile(input, png, "template", { "--json", "--max-transport-voxels", "64" });
+  EXPECT_EQ(r.Status, 0) << r.Output;
+  EXPECT_TRUE(Contains(r.Output, "max_transport_voxels=64 ")) << r.Output;
+  EXPECT_GT(ReadPng(png).Lit, 400) << r.Output;
+}
+
 // The viewer's transfer-function keys and mouse: p (next preset), ] (level up), } (window
 // wider), ctrl + left drag (window/level), w (screenshot into the working folder).
 TEST_F(Cli, ViewerPresetWindowLevelAndScreenshotKeys)
