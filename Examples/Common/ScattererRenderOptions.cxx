@@ -235,7 +235,8 @@ int ParseRenderOptions(int argc, char* argv[], RenderOptions& o)
   transport.push_back(AddSetting(app, "--transport-scale", "N", il::TransportScale,
     "transport: volume voxels per transport voxel per axis", o.TransportScale));
   transport.push_back(AddSetting(app, "--max-transport-voxels", "N", il::MaximumTransportVoxels,
-    "transport: most voxels of a still frame's transport volume;\na larger volume is built coarser (0: no limit)",
+    "transport: most voxels of a still frame's transport volume;\na larger volume is built coarser "
+    "(0: no limit)",
     o.MaxTransportVoxels));
   transport.push_back(AddSetting(app, "--multiple-scattering", "K", il::MultipleScattering,
     "transport: multiple-scattering strength (1 physical,\n0 single scattering only)",

@@ -47,8 +47,8 @@
  * Progress (vtkCommand::ProgressEvent): a frame that rebuilds the illumination
  * reports 0 when the templates are regenerated, 0.1 when they are done, then the
  * light transport volume's GPU stages up to 0.95 (the medium's passes when the
- * medium changed, a quarter of each light's sweep, the light it brings, the gather,
- * the source, each diffusion iteration, the combine; only while an observer is present, because
+ * medium changed, a quarter of each light's sweep, the light it brings, the source,
+ * each diffusion iteration, the gather; only while an observer is present, because
  * each report waits for the GPU), and 1 after the image, with the progress text "Scatterer
  * illumination" (the mapper's executive also reports 0 and 1, untitled, when its pipeline runs).
  * Frames that rebuild nothing report nothing.

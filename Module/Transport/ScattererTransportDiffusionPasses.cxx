@@ -64,38 +64,6 @@ vtkTextureObject* Diffuse(
   return textures.Fluence[1 - current];
 }
 
-// Pass 4: the fluence times MultipleScattering and the lights' ambient term times its
-// occlusion, both interpolated from the coarse grid, added to each fine texel's light.
-void Combine(const TransportPass& pass, const CoarseGrid& coarse, const CoarseUniforms& u,
-  vtkTextureObject* fluence)
-{
-  const vtkScattererTransportVolume::Inputs& in = pass.In;
-  vtkShaderProgram* program = UseProgram(pass.Window, pass.Programs.Combine.get());
-  ScopedSampler phi(program, "st_fluence", fluence);
-  ScopedSampler occlusion(program, "st_occlusion", pass.Textures.CoarseOcclusion);
-  float ambient[3] = { 0, 0, 0 };
-  for (const auto& light : in.Lights)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      ambient[c] += light.Ambient[c];
-    }
-  }
-  program->SetUniform3f("st_ambient", ambient);
-  float dims[3];
-  pass.Grid.GetDims(dims);
-  program->SetUniform3f("st_gridDims", dims);
-  program->SetUniform3f("st_coarseDims", u.Dims);
-  program->SetUniform3f("st_coarseToGrid", u.ToGrid);
-  program->SetUniformf("st_block", static_cast<float>(coarse.Block));
-  program->SetUniformf("st_strength", in.MultipleScattering);
-  vtkOpenGLState* state = pass.Window->GetState();
-  BlendAdditively(state);
-  state->vtkglViewport(0, 0, pass.Grid.Dims[0], pass.Grid.Dims[1]);
-  DrawLayers(pass.Framebuffer, pass.Programs.Combine.get(), program, { pass.Textures.Light },
-    pass.Grid.Dims[2]);
-  state->vtkglDisable(GL_BLEND);
-}
 }
 
 int DiffusionIterations(const vtkScattererTransportVolume::Inputs& in)
@@ -103,7 +71,8 @@ int DiffusionIterations(const vtkScattererTransportVolume::Inputs& in)
   return in.MultipleScattering > 0.0f ? std::max(1, in.DiffusionIterations) : 0;
 }
 
-bool AddScatteredAndAmbientLight(const TransportPass& pass, const SweepPlan& plan, std::string& why)
+bool SolveMultipleScattering(
+  const TransportPass& pass, const SweepPlan& plan, vtkTextureObject*& fluence, std::string& why)
 {
   const CoarseGrid coarse = CoarseGrid::Over(pass.Grid, pass.In.Downsample);
   if (!pass.Textures.AllocateCoarse(pass.Window, coarse.Dims, why))
@@ -115,8 +84,29 @@ bool AddScatteredAndAmbientLight(const TransportPass& pass, const SweepPlan& pla
   state->vtkglDisable(GL_BLEND);
   state->vtkglViewport(0, 0, coarse.Dims[0], coarse.Dims[1]);
   DrawSource(pass, plan, coarse, uniforms);
-  vtkTextureObject* fluence = Diffuse(pass, coarse, uniforms, DiffusionIterations(pass.In));
-  Combine(pass, coarse, uniforms, fluence);
+  fluence = Diffuse(pass, coarse, uniforms, DiffusionIterations(pass.In));
   return true;
+}
+
+ScopedScatteredLight::ScopedScatteredLight(
+  vtkShaderProgram* program, const TransportPass& pass, vtkTextureObject* fluence)
+  : Fluence(program, "st_fluence", fluence)
+  , Occlusion(program, "st_occlusion", pass.Textures.CoarseOcclusion)
+{
+  const CoarseGrid coarse = CoarseGrid::Over(pass.Grid, pass.In.Downsample);
+  const CoarseUniforms u(pass.Grid, coarse);
+  float ambient[3] = { 0, 0, 0 };
+  for (const auto& light : pass.In.Lights)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      ambient[c] += light.Ambient[c];
+    }
+  }
+  program->SetUniform3f("st_ambient", ambient);
+  program->SetUniform3f("st_coarseDims", u.Dims);
+  program->SetUniform3f("st_coarseToGrid", u.ToGrid);
+  program->SetUniformf("st_block", static_cast<float>(coarse.Block));
+  program->SetUniformf("st_strength", pass.In.MultipleScattering);
 }
 }

@@ -1,5 +1,6 @@
 #include "ScattererTransportLightPasses.h"
 
+#include "ScattererTransportDiffusionPasses.h"
 #include "ScattererTransportFramebuffer.h"
 #include "ScattererTransportGrid.h"
 #include "ScattererTransportPass.h"
@@ -302,7 +303,7 @@ void AddArrivingLight(const TransportPass& pass, const vtkScattererTransportVolu
   DrawIntoArriving(pass, pass.Programs.Arrive.get(), program, first);
 }
 
-void GatherLight(const TransportPass& pass, const SweepPlan& plan)
+void GatherLight(const TransportPass& pass, const SweepPlan& plan, vtkTextureObject* fluence)
 {
   const vtkScattererTransportVolume::Inputs& in = pass.In;
   const std::vector<int>& layerGathers = pass.Textures.LayerGathers;
@@ -328,9 +329,9 @@ void GatherLight(const TransportPass& pass, const SweepPlan& plan)
     ScopedSampler medium(program, "st_medium", pass.Tables.Medium);
     ScopedSampler kernel(program, "st_kernel", pass.Tables.Kernel);
     ScopedSampler materials(program, "st_materialTable", pass.Tables.Materials);
+    ScopedScatteredLight scattered(program, pass, fluence);
     DrawLayersWhere(
       pass.Framebuffer, quad, program, { pass.Textures.Light }, pass.Grid.Dims[2], drawn);
   }
-  pass.Progress.StepDone();
 }
 }

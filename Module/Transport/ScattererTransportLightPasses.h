@@ -16,6 +16,7 @@
 #include <string>
 
 class vtkShaderProgram;
+class vtkTextureObject;
 
 namespace scatterer_gpu
 {
@@ -79,12 +80,15 @@ void AddArrivingLight(const TransportPass& pass, const vtkScattererTransportVolu
 
 /**
  * Gathers the arriving light of all lights (or the direct light, swept by @p plan)
- * through the materials' scatterer templates into pass.Textures.Light:
+ * through the materials' scatterer templates, and writes into pass.Textures.Light the
+ * light each texel receives:
  *   R(p) = sum_j w_j c_j A(p + r_j) / sum_j w_j                     (single scattering)
+ *   L(p) = R(p) + MultipleScattering phi(p) + ambient AO(p)
+ * with phi the coarse @p fluence of SolveMultipleScattering (ScopedScatteredLight).
  * Linear in each light's T_l with weights that do not depend on the light, so one
  * gather serves every light.
  */
-void GatherLight(const TransportPass& pass, const SweepPlan& plan);
+void GatherLight(const TransportPass& pass, const SweepPlan& plan, vtkTextureObject* fluence);
 }
 
 #endif

@@ -18,7 +18,6 @@
 #include "scatterer_transport_arrive.h"
 #include "scatterer_transport_arriving.h"
 #include "scatterer_transport_coarsen.h"
-#include "scatterer_transport_combine.h"
 #include "scatterer_transport_common.h"
 #include "scatterer_transport_count.h"
 #include "scatterer_transport_diffuse.h"
@@ -29,6 +28,7 @@
 #include "scatterer_transport_lines.h"
 #include "scatterer_transport_materials.h"
 #include "scatterer_transport_medium.h"
+#include "scatterer_transport_scattered.h"
 #include "scatterer_transport_source.h"
 #include "scatterer_transport_sweep.h"
 #include "scatterer_transport_sweep_common.h"
@@ -45,8 +45,8 @@ namespace
 const char* const kCompileFailed =
   "the transport shaders failed to compile on this OpenGL implementation";
 
-// The common declarations, after the variant's defines, the materials', the sweeps' and
-// the arriving light's functions go where the pass has their tags.
+// The common declarations, after the variant's defines, the materials', the sweeps', the
+// arriving light's and the scattered light's functions go where the pass has their tags.
 std::string WithCommon(const char* pass, const std::string& variant)
 {
   std::string text = pass;
@@ -54,7 +54,8 @@ std::string WithCommon(const char* pass, const std::string& variant)
                                                            variant + scatterer_transport_common },
     { "//VTK::Transport::Materials", scatterer_transport_materials },
     { "//VTK::Transport::Sweep", scatterer_transport_sweep_common },
-    { "//VTK::Transport::Arriving", scatterer_transport_arriving } };
+    { "//VTK::Transport::Arriving", scatterer_transport_arriving },
+    { "//VTK::Transport::Scattered", scatterer_transport_scattered } };
   for (const auto& chunk : chunks)
   {
     const auto at = text.find(chunk.first);
@@ -109,7 +110,6 @@ bool TransportPrograms::Create(
   this->Count = quad(scatterer_transport_count);
   this->Source = quad(WithCommon(scatterer_transport_source, variant));
   this->Diffuse = quad(scatterer_transport_diffuse);
-  this->Combine = quad(scatterer_transport_combine);
   for (auto* q : this->All())
   {
     if (!(*q)->Program)
@@ -125,11 +125,11 @@ bool TransportPrograms::Create(
   return true;
 }
 
-std::array<std::unique_ptr<vtkOpenGLQuadHelper>*, 10> TransportPrograms::All()
+std::array<std::unique_ptr<vtkOpenGLQuadHelper>*, 9> TransportPrograms::All()
 {
   return { &this->Medium, &this->Coarsen, &this->Count, &this->Arrive,
     &this->Gather[GatherArriving], &this->Gather[GatherTemplates],
-    &this->Gather[GatherAcrossMaterials], &this->Source, &this->Diffuse, &this->Combine };
+    &this->Gather[GatherAcrossMaterials], &this->Source, &this->Diffuse };
 }
 
 vtkOpenGLQuadHelper* TransportPrograms::Sweep(

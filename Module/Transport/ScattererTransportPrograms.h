@@ -39,11 +39,11 @@ struct TransportPrograms
   std::unique_ptr<vtkOpenGLQuadHelper> Coarsen; ///< pass 0b: medium and occlusion, coarse grid
   std::unique_ptr<vtkOpenGLQuadHelper> Count;   ///< pass 0c: which gather each layer needs
   std::unique_ptr<vtkOpenGLQuadHelper> Arrive;  ///< pass 2a: a light's arriving light
-  /// pass 2b: template in-scattering, per GatherVariant
+  /// passes 2b and 4, after 3a and 3b: template in-scattering plus the multiply scattered
+  /// and ambient light, the light each texel receives, per GatherVariant
   std::unique_ptr<vtkOpenGLQuadHelper> Gather[GatherVariants];
   std::unique_ptr<vtkOpenGLQuadHelper> Source;  ///< pass 3a: light scattered once, coarse grid
   std::unique_ptr<vtkOpenGLQuadHelper> Diffuse; ///< pass 3b: one Jacobi iteration
-  std::unique_ptr<vtkOpenGLQuadHelper> Combine; ///< pass 4: coarse light added to the fine
   std::string CreatedVariant;                   ///< the defines they were compiled with
 
   /// The kinds of sweep program (ST_SWEEP_POSITIONAL, ST_SWEEP_ENTERING in
@@ -92,7 +92,7 @@ struct TransportPrograms
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:
-  std::array<std::unique_ptr<vtkOpenGLQuadHelper>*, 10> All();
+  std::array<std::unique_ptr<vtkOpenGLQuadHelper>*, 9> All();
   std::unique_ptr<vtkOpenGLQuadHelper> Sweeps[kSweepKinds]; ///< pass 1, per kind, when first used
   std::unique_ptr<vtkOpenGLQuadHelper> Lines;               ///< SweepLines' first draw
   std::unique_ptr<vtkOpenGLQuadHelper> LineMeans[4];        ///< its second, per entering x arriving

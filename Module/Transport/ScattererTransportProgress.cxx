@@ -10,8 +10,8 @@ void TransportProgress::BeginBuild(int lights, int iterations, bool medium)
 {
   this->Done = 0;
   this->BeforeSweeps = medium ? 1 : 0;
-  // + the gather, the source, the combine
-  this->Total = this->BeforeSweeps + lights * (kSweepSteps + 1) + 3 + iterations;
+  // + the source, the gather (with the multiply scattered and ambient light added)
+  this->Total = this->BeforeSweeps + lights * (kSweepSteps + 1) + 2 + iterations;
   this->Building = true;
 }
 

@@ -1,7 +1,7 @@
 // The progress of a light transport build, reported as the fraction of its stages the
 // GPU has done: the medium passes when the medium changed, per light its sweep
-// (kSweepSteps reports) and the light it brings, then the gather, the source, each
-// diffusion iteration and the final combine.
+// (kSweepSteps reports) and the light it brings, then the source, each diffusion
+// iteration and the gather, which writes the whole light.
 #ifndef ScattererTransportProgress_h
 #define ScattererTransportProgress_h
 

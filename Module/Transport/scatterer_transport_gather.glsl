@@ -2,7 +2,8 @@
 //VTK::Output::Dec
 //============================================================================
 // Light transport volume, pass 2b: template in-scattering (layers in one draw, once
-// for all lights).
+// for all lights), with pass 4's multiply scattered and ambient light added
+// (scatterer_transport_scattered.glsl): the light each texel receives.
 //
 // The light a point p of material m receives, scattered once, from the light arriving
 // unscattered around it (A = sum_l E_l a_l T_l: scatterer_transport_arriving.glsl):
@@ -31,6 +32,7 @@
 //VTK::Transport::Common
 //VTK::Transport::Materials
 //VTK::Transport::Arriving
+//VTK::Transport::Scattered
 in vec2 texCoord;
 uniform sampler3D st_fineMedium;   // pass 0a: a = -1 (none), m, or m + ST_MIXED
 flat in float st_layer;          // this layer (scatterer_transport_layers_gs.glsl)
@@ -76,5 +78,5 @@ void main()
     single = weights > 0.0 ? sum / weights : single;
   }
 #endif
-  gl_FragData[0] = vec4(single, 1.0);
+  gl_FragData[0] = vec4(single + st_scatteredAndAmbient(j), 1.0);
 }

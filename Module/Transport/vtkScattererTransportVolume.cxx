@@ -173,15 +173,15 @@ bool vtkScattererTransportVolume::vtkInternals::RunPasses(
   {
     sweep(direct);
   }
-  if (ok)
-  {
-    scatterer_gpu::GatherLight(pass, this->CurrentPlan);
-    lap(this->LastStages.Gather);
-  }
-  ok = ok && scatterer_gpu::AddScatteredAndAmbientLight(pass, this->CurrentPlan, why);
+  // The diffusion needs only the arriving light, so it runs first and the gather writes
+  // the whole light in one pass.
+  vtkTextureObject* fluence = nullptr;
+  ok = ok && scatterer_gpu::SolveMultipleScattering(pass, this->CurrentPlan, fluence, why);
   if (ok)
   {
     lap(this->LastStages.Diffusion);
+    scatterer_gpu::GatherLight(pass, this->CurrentPlan, fluence);
+    lap(this->LastStages.Gather);
     this->Progress.BuildDone();
   }
   this->Progress.EndBuild();

@@ -251,8 +251,8 @@ public:
   /**
    * Called during a rebuild with the fraction of its passes done, (0, 1]: after the
    * medium's passes (when the medium changed), each quarter of each light's sweep, the
-   * light each brings, the gather, the source, each diffusion iteration and the final
-   * combine. The passes run on the GPU
+   * light each brings, the source, each diffusion iteration and the gather (which adds
+   * the diffused and the ambient light). The passes run on the GPU
    * asynchronously, so with a callback set the build waits for each stage (glFinish)
    * before reporting it: the fraction then says what the GPU has done, not what was
    * queued. Unset (the default), nothing waits. The mapper forwards it as its
