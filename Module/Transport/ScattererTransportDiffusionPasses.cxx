@@ -31,7 +31,7 @@ void DrawSource(const TransportPass& pass, const SweepPlan& plan, const CoarseGr
   program->SetUniform3f("st_coarseDims", u.Dims);
   program->SetUniform3f("st_coarseToGrid", u.ToGrid);
   program->SetUniformi("st_block", coarse.Block);
-  ScopedSampler fineMedium(program, "st_fineMedium", pass.Textures.FineMedium);
+  ScopedSampler fineScattering(program, "st_fineScattering", pass.Textures.FineScattering);
   ScopedArrivingLight arriving(program, pass, plan);
   DrawLayers(pass.Framebuffer, pass.Programs.Source.get(), program, { pass.Textures.CoarseSource },
     coarse.Dims[2]);

@@ -324,7 +324,7 @@ void GatherLight(const TransportPass& pass, const SweepPlan& plan, vtkTextureObj
     SetCommonUniforms(program, pass.Grid, in);
     SetMaterialUniforms(program, in);
     ScopedArrivingLight arriving(program, pass, plan);
-    ScopedSampler fineMedium(program, "st_fineMedium", pass.Textures.FineMedium);
+    ScopedSampler fineGather(program, "st_fineGather", pass.Textures.FineGather);
     ScopedVolume volume(program, in);
     ScopedSampler medium(program, "st_medium", pass.Tables.Medium);
     ScopedSampler kernel(program, "st_kernel", pass.Tables.Kernel);

@@ -40,12 +40,12 @@ void DrawFineMedium(const TransportPass& pass)
   ScopedSampler kernel(program, "st_kernel", pass.Tables.Kernel);
   ScopedSampler materials(program, "st_materialTable", pass.Tables.Materials);
   pass.Window->GetState()->vtkglViewport(0, 0, pass.Grid.Dims[0], pass.Grid.Dims[1]);
-  DrawLayers(pass.Framebuffer, pass.Programs.Medium.get(), program, { pass.Textures.FineMedium },
-    pass.Grid.Dims[2]);
+  DrawLayers(pass.Framebuffer, pass.Programs.Medium.get(), program,
+    { pass.Textures.FineScattering, pass.Textures.FineGather }, pass.Grid.Dims[2]);
 }
 
 // Pass 0c: the gather variant each layer needs: the texels of each layer at or above
-// each variant's least gather value (pass 0a's alpha: -1 none, m, m + ST_MIXED),
+// each variant's least gather value (pass 0a's FineGather: -1 none, m, m + ST_MIXED),
 // counted by occlusion queries.
 std::vector<int> CountLayerGathers(const TransportPass& pass)
 {
@@ -54,7 +54,7 @@ std::vector<int> CountLayerGathers(const TransportPass& pass)
   float dims[3];
   pass.Grid.GetDims(dims);
   program->SetUniform3f("st_gridDims", dims);
-  ScopedSampler fineMedium(program, "st_fineMedium", pass.Textures.FineMedium);
+  ScopedSampler fineGather(program, "st_fineGather", pass.Textures.FineGather);
   // A target of the grid's size to draw on, nothing written.
   vtkOpenGLState* state = pass.Window->GetState();
   vtkOpenGLState::ScopedglColorMask mask(state);

@@ -12,9 +12,10 @@ namespace scatterer_gpu
 struct TransportPass;
 
 /**
- * - pass 0a (scatterer_transport_medium.glsl), into pass.Textures.FineMedium: each fine
- *   texel's scattering coefficient as the multiple-scattering source takes it, and which
- *   gather it takes (whether its photons land in another material);
+ * - pass 0a (scatterer_transport_medium.glsl), into pass.Textures.FineScattering and
+ *   FineGather: each fine texel's scattering coefficient as the multiple-scattering
+ *   source takes it, and which gather it takes (whether its photons land in another
+ *   material);
  * - pass 0b (scatterer_transport_coarsen.glsl), into CoarseMedium and CoarseOcclusion:
  *   the medium on the diffusion's coarse grid, each texel the mean over a block of fine
  *   texels, and the ambient occlusion of its centre.

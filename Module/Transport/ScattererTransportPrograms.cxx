@@ -30,6 +30,7 @@
 #include "scatterer_transport_medium.h"
 #include "scatterer_transport_scattered.h"
 #include "scatterer_transport_source.h"
+#include "scatterer_transport_stored_gather.h"
 #include "scatterer_transport_sweep.h"
 #include "scatterer_transport_sweep_common.h"
 
@@ -46,7 +47,8 @@ const char* const kCompileFailed =
   "the transport shaders failed to compile on this OpenGL implementation";
 
 // The common declarations, after the variant's defines, the materials', the sweeps', the
-// arriving light's and the scattered light's functions go where the pass has their tags.
+// arriving light's, the scattered light's and the stored gather's functions go where the
+// pass has their tags.
 std::string WithCommon(const char* pass, const std::string& variant)
 {
   std::string text = pass;
@@ -55,7 +57,8 @@ std::string WithCommon(const char* pass, const std::string& variant)
     { "//VTK::Transport::Materials", scatterer_transport_materials },
     { "//VTK::Transport::Sweep", scatterer_transport_sweep_common },
     { "//VTK::Transport::Arriving", scatterer_transport_arriving },
-    { "//VTK::Transport::Scattered", scatterer_transport_scattered } };
+    { "//VTK::Transport::Scattered", scatterer_transport_scattered },
+    { "//VTK::Transport::StoredGather", scatterer_transport_stored_gather } };
   for (const auto& chunk : chunks)
   {
     const auto at = text.find(chunk.first);
@@ -107,7 +110,7 @@ bool TransportPrograms::Create(
     this->Gather[g] = quad(WithCommon(
       scatterer_transport_gather, variant + "#define ST_GATHER " + std::to_string(g) + "\n"));
   }
-  this->Count = quad(scatterer_transport_count);
+  this->Count = quad(WithCommon(scatterer_transport_count, variant));
   this->Source = quad(WithCommon(scatterer_transport_source, variant));
   this->Diffuse = quad(scatterer_transport_diffuse);
   for (auto* q : this->All())

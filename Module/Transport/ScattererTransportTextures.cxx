@@ -24,20 +24,28 @@ size_t Texels(vtkTextureObject* texture)
     : 0;
 }
 
-// Allocates `texture` as a new RGBA16F (4 components) or R16F (1) 3D texture of `dims`
-// (linear, clamped to edge).
-bool Allocate16F(vtkOpenGLRenderWindow* window, vtkSmartPointer<vtkTextureObject>& texture,
-  const int dims[3], int components = 4)
+// Allocates `texture` as a new 3D texture of `dims` (linear, clamped to edge) in
+// `internalFormat`, e.g. GL_RGBA16F (format GL_RGBA, 4 components).
+bool Allocate3D(vtkOpenGLRenderWindow* window, vtkSmartPointer<vtkTextureObject>& texture,
+  const int dims[3], unsigned int internalFormat, unsigned int format, int components)
 {
   texture = NewTransportTexture(window, true, vtkTextureObject::ClampToEdge);
-  texture->SetInternalFormat(components == 1 ? GL_R16F : GL_RGBA16F);
-  texture->SetFormat(components == 1 ? GL_RED : GL_RGBA);
+  texture->SetInternalFormat(internalFormat);
+  texture->SetFormat(format);
   if (!texture->Allocate3D(dims[0], dims[1], dims[2], components, VTK_FLOAT))
   {
     texture = nullptr; // allocated again next time
     return false;
   }
   return true;
+}
+
+// A new RGBA16F (4 components) or R16F (1) 3D texture.
+bool Allocate16F(vtkOpenGLRenderWindow* window, vtkSmartPointer<vtkTextureObject>& texture,
+  const int dims[3], int components = 4)
+{
+  return components == 1 ? Allocate3D(window, texture, dims, GL_R16F, GL_RED, 1)
+                         : Allocate3D(window, texture, dims, GL_RGBA16F, GL_RGBA, 4);
 }
 
 // A new R16F texture (linear) whose border reads 1: outside the grid the light has
@@ -80,12 +88,15 @@ bool TransportTextures::AllocateFine(
   vtkOpenGLRenderWindow* window, const int dims[3], std::string& why)
 {
   if (HasSize(this->Light, dims[0], dims[1], dims[2]) &&
-    HasSize(this->FineMedium, dims[0], dims[1], dims[2]))
+    HasSize(this->FineScattering, dims[0], dims[1], dims[2]) &&
+    HasSize(this->FineGather, dims[0], dims[1], dims[2]))
   {
     return true;
   }
   ++this->MediumAllocations;
-  if (!Allocate16F(window, this->Light, dims) || !Allocate16F(window, this->FineMedium, dims))
+  if (!Allocate16F(window, this->Light, dims) ||
+    !Allocate3D(window, this->FineScattering, dims, GL_R11F_G11F_B10F, GL_RGB, 3) ||
+    !Allocate3D(window, this->FineGather, dims, GL_R8, GL_RED, 1))
   {
     why = "the light textures could not be allocated";
     return false;
@@ -210,11 +221,11 @@ bool TransportTextures::AllocateCoarse(
 
 size_t TransportTextures::GetGPUBytes() const
 {
-  constexpr size_t rgba16f = 8, r16f = 2;
-  return rgba16f *
-    (Texels(this->Light) + Texels(this->FineMedium) + Texels(this->Arriving) +
-      Texels(this->Fluence[0]) + Texels(this->Fluence[1]) + Texels(this->CoarseMedium) +
-      Texels(this->CoarseSource)) +
+  constexpr size_t rgba16f = 8, r11g11b10f = 4, r16f = 2, r8 = 1;
+  return r11g11b10f * Texels(this->FineScattering) + r8 * Texels(this->FineGather) +
+    rgba16f *
+    (Texels(this->Light) + Texels(this->Arriving) + Texels(this->Fluence[0]) +
+      Texels(this->Fluence[1]) + Texels(this->CoarseMedium) + Texels(this->CoarseSource)) +
     r16f *
     (Texels(this->Transmittance) + Texels(this->Slices[0]) + Texels(this->Slices[1]) +
       2 * Texels(this->Lines) + 4 * (Texels(this->LineEnds[0]) + Texels(this->LineEnds[1])) +
@@ -223,10 +234,10 @@ size_t TransportTextures::GetGPUBytes() const
 
 void TransportTextures::ReleaseGraphicsResources(vtkWindow* window)
 {
-  for (auto* t :
-    { &this->Light, &this->FineMedium, &this->Arriving, &this->Transmittance, &this->Slices[0],
-      &this->Slices[1], &this->Lines, &this->LineEnds[0], &this->LineEnds[1], &this->Fluence[0],
-      &this->Fluence[1], &this->CoarseMedium, &this->CoarseSource, &this->CoarseOcclusion })
+  for (auto* t : { &this->Light, &this->FineScattering, &this->FineGather, &this->Arriving,
+         &this->Transmittance, &this->Slices[0], &this->Slices[1], &this->Lines, &this->LineEnds[0],
+         &this->LineEnds[1], &this->Fluence[0], &this->Fluence[1], &this->CoarseMedium,
+         &this->CoarseSource, &this->CoarseOcclusion })
   {
     if (*t)
     {

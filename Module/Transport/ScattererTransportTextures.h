@@ -28,10 +28,14 @@ std::vector<float> DownloadTexture3D(vtkTextureObject* texture, int components);
 struct TransportTextures
 {
   vtkSmartPointer<vtkTextureObject> Light; ///< RGBA16F, fine grid: the light received
-  /// RGBA16F, fine grid: what no light changes (pass 0a): the source's scattering
-  /// coefficient, the gather each texel takes
-  vtkSmartPointer<vtkTextureObject> FineMedium;
-  /// Per layer of FineMedium, the gather variant it needs (a GatherVariant)
+  /// R11F_G11F_B10F, fine grid, what no light changes (pass 0a): the scattering
+  /// coefficient as the multiple-scattering source takes it (the source averages it
+  /// over a block of texels). With FineGather 5 bytes a texel, where one RGBA16F
+  /// texture of both took 8.
+  vtkSmartPointer<vtkTextureObject> FineScattering;
+  /// R8, fine grid (pass 0a): the gather each texel takes (st_storedGather)
+  vtkSmartPointer<vtkTextureObject> FineGather;
+  /// Per layer of FineGather, the gather variant it needs (a GatherVariant)
   std::vector<int> LayerGathers;
   /// RGBA16F, fine grid + 1 texel a side: light arriving unscattered (null when unused)
   vtkSmartPointer<vtkTextureObject> Arriving;
@@ -47,11 +51,12 @@ struct TransportTextures
   vtkSmartPointer<vtkTextureObject> CoarseSource;    ///< RGBA16F, coarse grid: light scattered once
   vtkSmartPointer<vtkTextureObject> CoarseOcclusion; ///< R16F, coarse grid: ambient occlusion
 
-  /// Counts the allocations of FineMedium, CoarseMedium and CoarseOcclusion: what the
-  /// medium passes drew is gone when it changes.
+  /// Counts the allocations of FineScattering, FineGather, CoarseMedium and CoarseOcclusion: what
+  /// the medium passes drew is gone when it changes.
   int MediumAllocations = 0;
 
-  /** Light and FineMedium on the fine grid of @p dims; false with @p why set if refused. */
+  /** Light, FineScattering and FineGather on the fine grid of @p dims; false with @p why set if
+   * refused. */
   bool AllocateFine(vtkOpenGLRenderWindow* window, const int dims[3], std::string& why);
 
   /** Arriving for the fine grid of @p dims (one texel more a side), needed by builds

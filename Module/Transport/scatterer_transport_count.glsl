@@ -6,8 +6,9 @@
 // least st_atLeast; every other texel is discarded. Nothing is written (colour mask
 // off). It tells which variant of the gather each layer needs.
 //============================================================================
+//VTK::Transport::StoredGather
 in vec2 texCoord;
-uniform sampler3D st_fineMedium;
+uniform sampler3D st_fineGather;
 uniform vec3 st_gridDims;
 flat in float st_layer;          // this layer (scatterer_transport_layers_gs.glsl)
 uniform float st_atLeast;
@@ -15,7 +16,7 @@ uniform float st_atLeast;
 void main()
 {
   ivec3 j = ivec3(ivec2(floor(texCoord * st_gridDims.xy)), int(st_layer));
-  if (texelFetch(st_fineMedium, j, 0).a < st_atLeast)
+  if (st_gatherFrom(texelFetch(st_fineGather, j, 0).r) < st_atLeast)
   {
     discard;
   }

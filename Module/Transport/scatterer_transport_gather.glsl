@@ -16,7 +16,7 @@
 //   the speed ratio n_m / n_mp and its weight by the opacity ratio (section 3.4).
 // A point outside every material receives A(p) itself.
 //
-// Which of the three the texel needs comes from the medium pass (st_fineMedium, pass
+// Which of the three the texel needs comes from the medium pass (st_fineGather, pass
 // 0a, scatterer_transport_medium.glsl): the light moves every frame of an orbit, the
 // materials do not. The program comes in three variants (ST_GATHER), each layer drawn
 // by the cheapest one that serves all its texels (ScattererTransportMediumPasses):
@@ -33,14 +33,15 @@
 //VTK::Transport::Materials
 //VTK::Transport::Arriving
 //VTK::Transport::Scattered
+//VTK::Transport::StoredGather
 in vec2 texCoord;
-uniform sampler3D st_fineMedium;   // pass 0a: a = -1 (none), m, or m + ST_MIXED
+uniform sampler3D st_fineGather;   // pass 0a: -1 (none), m, or m + ST_MIXED (st_storedGather)
 flat in float st_layer;          // this layer (scatterer_transport_layers_gs.glsl)
 
 void main()
 {
   vec3 j = vec3(floor(texCoord * st_gridDims.xy), st_layer);
-  float gather = texelFetch(st_fineMedium, ivec3(j), 0).a;
+  float gather = st_gatherFrom(texelFetch(st_fineGather, ivec3(j), 0).r);
   vec3 single = st_arrivingAt(j);
 #if ST_GATHER != ST_GATHER_ARRIVING
   if (gather >= 0.0)

@@ -5,7 +5,7 @@
 // (all layers in one draw). It runs when the medium does (the volume, its transfer
 // functions, clipping, cropping, the materials, the grid), not when a light moves:
 // an orbit under the headlight or ParaView's light kit moves the lights every frame.
-// - rgb: the texel's scattering coefficient as the multiple-scattering source takes
+// - output 0 (FineScattering, rgb): the texel's scattering coefficient as the multiple-scattering source takes
 //   it (scatterer_transport_source.glsl),
 //     sigma_t(q) albedo(q) / cosh(tau_half(q)),
 //   tau_half = OcclusionStrength sigma_t(q) h / 2 over half a fine texel of mean size
@@ -13,13 +13,14 @@
 //   along each light's line, A(q) cosh(tau_half) (scatterer_transport_sweep.glsl);
 //   exact for a light along an axis (one across the texel's diagonal crosses up to
 //   sqrt(3) h of it).
-// - a: which gather the texel takes (scatterer_transport_gather.glsl): -1 outside
+// - output 1 (FineGather, st_storedGather): which gather the texel takes (scatterer_transport_gather.glsl): -1 outside
 //   every material; its material m when no photon of m's templates lands in another
 //   material (the photons then need no material look-up: no tint, no rescale); m + 8
 //   (ST_MIXED) when one does.
 //============================================================================
 //VTK::Transport::Common
 //VTK::Transport::Materials
+//VTK::Transport::StoredGather
 in vec2 texCoord;
 flat in float st_layer;          // this layer (scatterer_transport_layers_gs.glsl)
 uniform float st_fineSize; // a fine texel's mean size, world units
@@ -47,5 +48,6 @@ void main()
     }
     gather = float(m) + (mixed ? float(ST_MIXED) : 0.0);
   }
-  gl_FragData[0] = vec4(medium.a * medium.rgb * toCentre, gather);
+  gl_FragData[0] = vec4(medium.a * medium.rgb * toCentre, 1.0);
+  gl_FragData[1] = vec4(st_storedGather(gather));
 }

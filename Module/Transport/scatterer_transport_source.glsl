@@ -7,13 +7,13 @@
 // scattered once there,
 //   S(q) = sigma_s(q) A(q)
 // with A the light arriving unscattered (scatterer_transport_arriving.glsl), taken at
-// q's centre from its texel's mean: st_fineMedium holds sigma_s(q) / cosh(tau_half(q))
+// q's centre from its texel's mean: st_fineScattering holds sigma_s(q) / cosh(tau_half(q))
 // (pass 0a, scatterer_transport_medium.glsl). Outside the grid the medium is empty.
 //============================================================================
 //VTK::Transport::Common
 //VTK::Transport::Arriving
 in vec2 texCoord;
-uniform sampler3D st_fineMedium;   // pass 0a: rgb = sigma_s / cosh(tau_half)
+uniform sampler3D st_fineScattering; // pass 0a: rgb = sigma_s / cosh(tau_half)
 flat in float st_layer;          // this layer (scatterer_transport_layers_gs.glsl)
 uniform vec3 st_coarseDims;
 uniform vec3 st_coarseToGrid;      // coarse texel c covers fine positions c * st_block + st_coarseToGrid + [0, st_block)
@@ -29,7 +29,7 @@ void main()
     ivec3 q = fine + ivec3(k % st_block, (k / st_block) % st_block, k / (st_block * st_block));
     if (all(greaterThanEqual(q, ivec3(0))) && all(lessThan(q, dims)))
     {
-      source += texelFetch(st_fineMedium, q, 0).rgb * st_arrivingAtTexel(q);
+      source += texelFetch(st_fineScattering, q, 0).rgb * st_arrivingAtTexel(q);
     }
   }
   float b = float(st_block);
