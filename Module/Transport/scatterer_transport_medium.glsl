@@ -5,18 +5,18 @@
 // (all layers in one draw). It runs when the medium does (the volume, its transfer
 // functions, clipping, cropping, the materials, the grid), not when a light moves:
 // an orbit under the headlight or ParaView's light kit moves the lights every frame.
-// - output 0 (FineScattering, rgb): the texel's scattering coefficient as the multiple-scattering source takes
-//   it (scatterer_transport_source.glsl),
+// - output 0 (FineScattering, rgb): the texel's scattering coefficient as the
+//   multiple-scattering source takes it (scatterer_transport_source.glsl),
 //     sigma_t(q) albedo(q) / cosh(tau_half(q)),
 //   tau_half = OcclusionStrength sigma_t(q) h / 2 over half a fine texel of mean size
 //   h: the source is sigma_s(q) A(q), and the arriving light's texels hold their mean
 //   along each light's line, A(q) cosh(tau_half) (scatterer_transport_sweep.glsl);
 //   exact for a light along an axis (one across the texel's diagonal crosses up to
 //   sqrt(3) h of it).
-// - output 1 (FineGather, st_storedGather): which gather the texel takes (scatterer_transport_gather.glsl): -1 outside
-//   every material; its material m when no photon of m's templates lands in another
-//   material (the photons then need no material look-up: no tint, no rescale); m + 8
-//   (ST_MIXED) when one does.
+// - output 1 (FineGather, st_storedGather): which gather the texel takes
+//   (scatterer_transport_gather.glsl): -1 outside every material; its material m when
+//   no photon of m's templates lands in another material (the photons then need no
+//   material look-up: no tint, no rescale); m + 8 (ST_MIXED) when one does.
 //============================================================================
 //VTK::Transport::Common
 //VTK::Transport::Materials
