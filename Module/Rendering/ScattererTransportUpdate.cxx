@@ -151,6 +151,7 @@ std::string TransportUpdate::Update(vtkRenderer* ren, vtkVolume* vol, const Fram
   int gridDims[3];
   t.GetGridSourceDims(gridDims);
   t.Downsample = parameters.TransportScaleFor(gridDims, false);
+  t.StillDownsample = t.Downsample; // the diffusion's grid, also on interactive frames
   const bool interactive = vol->GetAllocatedRenderTime() < 1.0;
   if (interactive && !this->Transport->IsCurrent(renWin, t))
   {

@@ -246,7 +246,8 @@ double vtkScattererTemplateVolumeMapper::GetIlluminationReach(const double spaci
   // Per sample: photons lie within one radius; the thin-part check marches on toward
   // the light to LongRangeMultiple x the photon's offset. Transport: the kernel reaches
   // one radius, the ambient occlusion two diffusion voxels and the diffusion one such
-  // voxel per iteration (a diffusion voxel spans max(4, scale) volume voxels); and a
+  // voxel per iteration (a diffusion voxel spans diffusionVoxelsFor(the still frames'
+  // scale) volume voxels, also on frames built coarser while the user drags); and a
   // transport voxel is interpolated by its neighbours.
   const bool thin = this->ShadowsEnabled && this->ThinPartCheckEnabled;
   const bool transport = this->IlluminationMode == TRANSPORT;
@@ -255,7 +256,10 @@ double vtkScattererTemplateVolumeMapper::GetIlluminationReach(const double spaci
         this->GetEffectiveTransportScale(this->WholeDimensions, true))
     : std::max(this->TransportScale, this->InteractiveTransportScale);
   const double voxel = std::max({ sx, sy, sz });
-  const double diffusionVoxel = std::max(4, scale) * voxel;
+  const int stillScale = this->WholeDimensions[0] > 0
+    ? this->GetEffectiveTransportScale(this->WholeDimensions, false)
+    : this->TransportScale;
+  const double diffusionVoxel = scatterer::illumination::diffusionVoxelsFor(stillScale) * voxel;
   const int iterations = vtkScattererTransportVolume::Inputs().DiffusionIterations;
   const double transportReach = std::max({ radius, 2.0 * diffusionVoxel,
     this->MultipleScattering > 0.0 ? iterations * diffusionVoxel : 0.0 });

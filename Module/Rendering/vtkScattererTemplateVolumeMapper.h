@@ -183,8 +183,9 @@ public:
    * (the volume's allocated render time below 1 s, as VTK's interactor asks
    * while the user drags; default 4) that must rebuild the volume: when nothing it
    * depends on changed (orbiting under a scene light), interactive frames keep the
-   * still frames' volume. Smaller is sharper and slower. A volume larger than
-   * MaximumTransportVoxels allows is built coarser.
+   * still frames' volume. Interactive frames keep the still frames' multiple scattering
+   * grid, so their colours stay the still frames'. Smaller is sharper and slower. A
+   * volume larger than MaximumTransportVoxels allows is built coarser.
    */
   vtkScattererSetSettingMacro(TransportScale, int);
   vtkGetMacro(TransportScale, int);

@@ -74,7 +74,8 @@ int DiffusionIterations(const vtkScattererTransportVolume::Inputs& in)
 bool SolveMultipleScattering(
   const TransportPass& pass, const SweepPlan& plan, vtkTextureObject*& fluence, std::string& why)
 {
-  const CoarseGrid coarse = CoarseGrid::Over(pass.Grid, pass.In.Downsample);
+  const CoarseGrid coarse =
+    CoarseGrid::Over(pass.Grid, pass.In.Downsample, pass.In.StillDownsample);
   if (!pass.Textures.AllocateCoarse(pass.Window, coarse.Dims, why))
   {
     return false;
@@ -93,7 +94,8 @@ ScopedScatteredLight::ScopedScatteredLight(
   : Fluence(program, "st_fluence", fluence)
   , Occlusion(program, "st_occlusion", pass.Textures.CoarseOcclusion)
 {
-  const CoarseGrid coarse = CoarseGrid::Over(pass.Grid, pass.In.Downsample);
+  const CoarseGrid coarse =
+    CoarseGrid::Over(pass.Grid, pass.In.Downsample, pass.In.StillDownsample);
   const CoarseUniforms u(pass.Grid, coarse);
   float ambient[3] = { 0, 0, 0 };
   for (const auto& light : pass.In.Lights)

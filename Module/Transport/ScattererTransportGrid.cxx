@@ -3,6 +3,8 @@
 #include "vtkMatrix3x3.h"
 #include "vtkNew.h"
 
+#include <scatterer/IlluminationSettings.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -100,16 +102,27 @@ void TransportGrid::GetDims(float dims[3]) const
   }
 }
 
-CoarseGrid CoarseGrid::Over(const TransportGrid& grid, int downsample)
+CoarseGrid CoarseGrid::Over(const TransportGrid& grid, int downsample, int stillDownsample)
 {
-  // Blocks such that a coarse texel spans about 4 volume voxels (the diffusion's reach
-  // per iteration then stays the same). At least 2: a coarse texel's medium is the mean
-  // of its fine texels', and one point sample of the transfer function standing for a
-  // whole block (transport scale 3 or more) let the diffusion pile the bone's colour up
-  // into yellow-green blotches on the CT head; so from scale 3 on a coarse texel spans
-  // 6 or more voxels.
+  // A coarse texel spans diffusionVoxelsFor(s) volume voxels, s a still frame's voxels per
+  // fine texel. A coarse texel's medium is the mean of its fine texels' (pass 0b); one
+  // point sample of the transfer function standing for a whole block (transport scale 3
+  // or more) let the diffusion pile the bone's colour up into yellow-green blotches on
+  // the CT head, hence at least 2 fine texels a block at a still frame's scale. A frame
+  // rendered while the user drags is built at a coarser scale than s, and its coarse
+  // texels stay as large as a still frame's: blocks of 8 voxels (scale 4 on the CT head,
+  // 2 fine texels a block) outweighed the skull, a few voxels thick, by the soft tissue
+  // and air around it, and tinted the bone pink and mottled while the user dragged (ivory
+  // when they let go). Such a frame's fine texels are then blocks of their own, and their
+  // medium the mean of 2^3 points (Subsamples) instead of one, about as far apart as a
+  // still frame's fine texels. A still frame's own points stay its texels' centres, so
+  // that a volume resampled more finely, built coarser under MaximumTransportVoxels, is
+  // lit as the original (2^3 points there moved the 511x511x215 CT head away from it).
+  const int fine = std::max(1, downsample);
+  const int still = stillDownsample > 0 ? stillDownsample : fine;
   CoarseGrid coarse;
-  coarse.Block = std::max(2, 4 / std::max(1, downsample));
+  coarse.Block = std::max(1, scatterer::illumination::diffusionVoxelsFor(still) / fine);
+  coarse.Subsamples = fine >= 2 * still ? 2 : 1;
   for (int a = 0; a < 3; ++a)
   {
     const int first = grid.FirstIndex[a];

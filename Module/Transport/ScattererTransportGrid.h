@@ -58,9 +58,18 @@ struct CoarseGrid
   int Dims[3] = { 0, 0, 0 };
   int ToGrid[3] = { 0, 0, 0 }; ///< coarse texel c covers fine texels Block c + ToGrid + [0, Block)
   int Block = 2;               ///< fine texels per coarse texel along each axis
+  /// Points per axis each fine texel's medium is the mean of in passes 0a and 0b: 2 on a
+  /// frame built at twice a still frame's scale or more (while the user drags), so that
+  /// its medium is sampled about as finely as a still frame's; 1 (the centre) otherwise.
+  int Subsamples = 1;
 
-  /** The coarse grid over @p grid for volume voxels per fine texel @p downsample. */
-  static CoarseGrid Over(const TransportGrid& grid, int downsample);
+  /**
+   * The coarse grid over @p grid for volume voxels per fine texel @p downsample, its
+   * texels as large as a still frame's (@p stillDownsample voxels per fine texel; 0:
+   * @p downsample): the frames rendered while the user drags, built coarser, keep the
+   * still frames' multiple scattering.
+   */
+  static CoarseGrid Over(const TransportGrid& grid, int downsample, int stillDownsample);
 
   void GetDims(float dims[3]) const;
   void GetToGrid(float toGrid[3]) const;

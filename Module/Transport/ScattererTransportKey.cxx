@@ -58,6 +58,7 @@ std::uint64_t MediumKey(const vtkScattererTransportVolume::Inputs& in)
   f.Add(in.GradientAspect, 3);
   f.Add(in.OcclusionScale);
   f.Add(in.Downsample);
+  f.Add(in.StillDownsample);
   f.Add(in.IndexOrigin, 3);
   f.Add(in.Cropping);
   f.Add(in.CropFlags);

@@ -23,7 +23,7 @@ namespace scatterer_gpu
 namespace
 {
 // Pass 0a: the fine texels' scattering coefficient and gather.
-void DrawFineMedium(const TransportPass& pass)
+void DrawFineMedium(const TransportPass& pass, const CoarseGrid& coarse)
 {
   const vtkScattererTransportVolume::Inputs& in = pass.In;
   vtkShaderProgram* program = UseProgram(pass.Window, pass.Programs.Medium.get());
@@ -35,6 +35,7 @@ void DrawFineMedium(const TransportPass& pass)
     meanSize += static_cast<float>(pass.Grid.TexelLength(a)) / 3.0f;
   }
   program->SetUniformf("st_fineSize", meanSize);
+  program->SetUniformi("st_subsamples", coarse.Subsamples);
   ScopedVolume volume(program, in);
   ScopedSampler medium(program, "st_medium", pass.Tables.Medium);
   ScopedSampler kernel(program, "st_kernel", pass.Tables.Kernel);
@@ -106,6 +107,7 @@ void DrawCoarseMedium(const TransportPass& pass, const CoarseGrid& coarse)
   program->SetUniform3f("st_h", u.H);
   program->SetUniformi("st_aoSteps", 2);
   program->SetUniformi("st_block", coarse.Block);
+  program->SetUniformi("st_subsamples", coarse.Subsamples);
   ScopedVolume volume(program, pass.In);
   ScopedSampler medium(program, "st_medium", pass.Tables.Medium);
   pass.Window->GetState()->vtkglViewport(0, 0, coarse.Dims[0], coarse.Dims[1]);
@@ -116,13 +118,14 @@ void DrawCoarseMedium(const TransportPass& pass, const CoarseGrid& coarse)
 
 bool BuildMediumTextures(const TransportPass& pass, std::string& why)
 {
-  const CoarseGrid coarse = CoarseGrid::Over(pass.Grid, pass.In.Downsample);
+  const CoarseGrid coarse =
+    CoarseGrid::Over(pass.Grid, pass.In.Downsample, pass.In.StillDownsample);
   if (!pass.Textures.AllocateCoarse(pass.Window, coarse.Dims, why))
   {
     return false;
   }
   pass.Window->GetState()->vtkglDisable(GL_BLEND);
-  DrawFineMedium(pass);
+  DrawFineMedium(pass, coarse);
   pass.Textures.LayerGathers = CountLayerGathers(pass);
   DrawCoarseMedium(pass, coarse);
   pass.Progress.StepDone();

@@ -5,9 +5,12 @@
 // ambient occlusion of each coarse texel (all layers in one draw). Like pass 0a it runs
 // when the medium changes, not when a light moves. A coarse texel covers a block of
 // st_block^3 fine texels (st_block: 4 or 2, so that a coarse texel spans about 4
-// volume voxels, or 2 fine texels at TransportScale 3 and above): its medium (albedo,
-// sigma_t) is the mean of theirs (st_mediumAt at each). Never one point sample: see
-// ScattererTransportGrid.cxx, CoarseGrid::Over.
+// volume voxels, or 2 fine texels at TransportScale 3 and above; 1 on a frame built
+// coarser while the user drags, whose coarse texels stay a still frame's): its medium
+// (albedo, sigma_t) is the mean of theirs, each the mean over its points (st_mediumAt
+// at each st_subsample: the centre, or 2^3 points on a frame built coarser while the
+// user drags). Never one point sample of a block: see ScattererTransportGrid.cxx,
+// CoarseGrid::Over.
 //
 // The second target holds the ambient occlusion of the block centre p: VTK's ambient
 // light comes from every direction, so it is occluded by the medium around p.
@@ -34,13 +37,17 @@ void main()
   float b = float(st_block);
   vec3 fine = c * b + st_coarseToGrid;
   vec4 medium = vec4(0.0);
+  int points = st_subsamples * st_subsamples * st_subsamples;
   for (int k = 0; k < st_block * st_block * st_block; ++k)
   {
     vec3 o = vec3(float(k % st_block), float((k / st_block) % st_block), float(k / (st_block * st_block)));
-    // Outside the grid the medium is empty.
-    medium += st_mediumAt(st_gridToTexture(fine + o));
+    for (int p = 0; p < points; ++p)
+    {
+      // Outside the grid the medium is empty.
+      medium += st_mediumAt(st_gridToTexture(st_subsample(fine + o, p)));
+    }
   }
-  medium /= b * b * b;
+  medium /= b * b * b * float(points);
   vec3 centre = fine + vec3(0.5 * (b - 1.0));
   float open = 0.0;
   for (int a = 0; a < 3; ++a)

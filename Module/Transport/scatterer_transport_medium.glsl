@@ -7,10 +7,12 @@
 // an orbit under the headlight or ParaView's light kit moves the lights every frame.
 // - output 0 (FineScattering, rgb): the texel's scattering coefficient as the
 //   multiple-scattering source takes it (scatterer_transport_source.glsl),
-//     sigma_t(q) albedo(q) / cosh(tau_half(q)),
+//     sigma_s(q) / cosh(tau_half(q)),   sigma_s = sigma_t albedo,
 //   tau_half = OcclusionStrength sigma_t(q) h / 2 over half a fine texel of mean size
-//   h: the source is sigma_s(q) A(q), and the arriving light's texels hold their mean
-//   along each light's line, A(q) cosh(tau_half) (scatterer_transport_sweep.glsl);
+//   h, sigma_s and sigma_t the means over the texel's points (st_subsample: its centre,
+//   or 2^3 points on a frame built coarser while the user drags): the source is
+//   sigma_s(q) A(q), and the arriving light's texels hold their mean along each
+//   light's line, A(q) cosh(tau_half) (scatterer_transport_sweep.glsl);
 //   exact for a light along an axis (one across the texel's diagonal crosses up to
 //   sqrt(3) h of it).
 // - output 1 (FineGather, st_storedGather): which gather the texel takes
@@ -29,7 +31,14 @@ void main()
 {
   vec3 j = vec3(floor(texCoord * st_gridDims.xy), st_layer);
   vec3 t = st_gridToTexture(j);
-  vec4 medium = st_mediumAt(t);
+  vec4 medium = vec4(0.0); // rgb sigma_s, a sigma_t
+  int points = st_subsamples * st_subsamples * st_subsamples;
+  for (int k = 0; k < points; ++k)
+  {
+    vec4 m = st_mediumAt(st_gridToTexture(st_subsample(j, k)));
+    medium += vec4(m.rgb * m.a, m.a);
+  }
+  medium /= float(points);
   // 1 / cosh(tau_half) without overflow.
   float e = exp(-0.5 * st_occlusionScale * medium.a * st_fineSize);
   float toCentre = 2.0 * e / (1.0 + e * e);
@@ -48,6 +57,6 @@ void main()
     }
     gather = float(m) + (mixed ? float(ST_MIXED) : 0.0);
   }
-  gl_FragData[0] = vec4(medium.a * medium.rgb * toCentre, 1.0);
+  gl_FragData[0] = vec4(medium.rgb * toCentre, 1.0);
   gl_FragData[1] = vec4(st_storedGather(gather));
 }

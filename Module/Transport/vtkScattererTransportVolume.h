@@ -156,6 +156,9 @@ public:
     int CropFlags = 0;
     float CropMin[3] = { 0, 0, 0 }, CropMax[3] = { 0, 0, 0 }; ///< dataset coordinates
     int Downsample = 2; ///< volume voxels per transport voxel along each axis
+    /// A still frame's Downsample, which the diffusion's grid follows also when this
+    /// build is coarser (a frame rendered while the user drags); 0: Downsample.
+    int StillDownsample = 0;
     int IndexOrigin[3] = { 0, 0,
       0 }; ///< structured index of the texture's first texel (extent start)
     std::vector<Light> Lights;

@@ -5,10 +5,12 @@
 // dragging in scatterer-viewer, 2026-11-30).
 #include "Common/ScattererCtHeadScene.h"
 #include "ScattererInProcessRender.h"
+#include "ScattererRenderHarness.h"
 
 #include "vtkImageData.h"
 #include "vtkImageResize.h"
 #include "vtkNew.h"
+#include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "scatterer/IlluminationSettings.h"
 #include "vtkScattererTemplateVolumeMapper.h"
@@ -17,6 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -45,6 +48,35 @@ double GreennessP99(const std::vector<unsigned char>& rgb)
   return green[static_cast<size_t>(0.99 * (green.size() - 1))];
 }
 
+/** Mean luminance (Rec. 709, 0-255) and redness (R - G) / (R + G + B) of the lit pixels. */
+struct LitColour
+{
+  double Luminance = 0.0;
+  double Redness = 0.0;
+};
+
+LitColour MeanLitColour(const std::vector<unsigned char>& rgb)
+{
+  LitColour mean;
+  size_t lit = 0;
+  for (size_t i = 0; i + 2 < rgb.size(); i += 3)
+  {
+    const double r = rgb[i], g = rgb[i + 1], b = rgb[i + 2];
+    if (std::max({ r, g, b }) > 8)
+    {
+      mean.Luminance += 0.2126 * r + 0.7152 * g + 0.0722 * b;
+      mean.Redness += (r - g) / (r + g + b);
+      ++lit;
+    }
+  }
+  if (lit > 0)
+  {
+    mean.Luminance /= static_cast<double>(lit);
+    mean.Redness /= static_cast<double>(lit);
+  }
+  return mean;
+}
+
 /** RMS difference of two RGB images, in [0, 1]. */
 double RmsDifference(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b)
 {
@@ -57,11 +89,19 @@ double RmsDifference(const std::vector<unsigned char>& a, const std::vector<unsi
   return a.empty() ? 0.0 : std::sqrt(sum / static_cast<double>(a.size()));
 }
 
-/** @p image rendered as the CT head scene, with @p configure's settings on the mapper. */
-std::vector<unsigned char> RenderCtHeadScene(
-  vtkImageData* image, const std::function<void(vtkScattererTemplateVolumeMapper*)>& configure)
+/**
+ * @p image rendered as the CT head scene, with @p configure's settings on the mapper, at
+ * the window's desired update rate @p updateRate (frames per second: above 1, a frame
+ * VTK's interactor renders while the user drags).
+ */
+std::vector<unsigned char> RenderCtHeadScene(vtkImageData* image,
+  const std::function<void(vtkScattererTemplateVolumeMapper*)>& configure,
+  double updateRate = 0.0001)
 {
-  return scatterer_testing::RenderRgb(image,
+  vtkRenderWindow* window = scatterer_testing::SharedWindow();
+  const double rate = window->GetDesiredUpdateRate();
+  window->SetDesiredUpdateRate(updateRate);
+  std::vector<unsigned char> rgb = scatterer_testing::RenderRgb(image,
     [&](
       vtkVolumeProperty* property, vtkRenderer* renderer, vtkScattererTemplateVolumeMapper* mapper)
     {
@@ -71,6 +111,8 @@ std::vector<unsigned char> RenderCtHeadScene(
       se::ApplyCtHeadMapperSettings(mapper);
       configure(mapper);
     });
+  window->SetDesiredUpdateRate(rate);
+  return rgb;
 }
 }
 
@@ -98,6 +140,48 @@ TEST(CtHeadTransportScales, CoarserTransportKeepsTheColours)
       << "transport scale " << scale << ": greenness " << greenness << " vs " << reference
       << " at scale 2 (yellow-green blotches)";
   }
+}
+
+// A frame rendered while the user drags (allocated render time under a second) is built at
+// InteractiveTransportScale (4) instead of 2, and keeps the still frames' diffusion grid
+// (CoarseGrid::Over): the bone stays ivory. With the diffusion on blocks of 8 voxels, as
+// the coarser scale alone gave, the bone turned pink and mottled while the user dragged.
+// Measured (160x160), luminance of the lit pixels and their redness (R - G) / (R + G + B):
+// still 132.9, 0.0744; dragging 143.7, 0.0698 (the coarser grid's single scattering alone
+// is 7 % brighter: 101.4 against 94.7 without multiple scattering); with 8-voxel blocks
+// 119.7, 0.0937, and with those blocks' medium averaged over 2^3 points per fine texel
+// 140.6, 0.1018.
+TEST(CtHeadTransportScales, ADraggingFrameKeepsTheStillColours)
+{
+  if (!std::filesystem::exists(se::CtHeadPath()))
+  {
+    GTEST_SKIP() << se::CtHeadPath() << " is missing (bash scripts/prepare-data.sh)";
+  }
+  std::string error;
+  vtkSmartPointer<vtkImageData> image = se::ReadVolumeOrCtHead("", error);
+  ASSERT_TRUE(image) << error;
+  int scale = 0;
+  auto render = [&](double updateRate)
+  {
+    return RenderCtHeadScene(
+      image,
+      [&](vtkScattererTemplateVolumeMapper* mapper)
+      {
+        mapper->SetTransportScale(2);
+        mapper->SetInteractiveTransportScale(4);
+        scale = mapper->GetEffectiveTransportScale(image->GetDimensions(), updateRate > 1.0);
+      },
+      updateRate);
+  };
+  const LitColour still = MeanLitColour(render(0.0001));
+  const LitColour dragging = MeanLitColour(render(30.0)); // 1/30 s a frame: interactive
+  EXPECT_EQ(scale, 4);
+  std::printf("still: luminance %.1f, redness %.4f; dragging: %.1f, %.4f\n", still.Luminance,
+    still.Redness, dragging.Luminance, dragging.Redness);
+  EXPECT_NEAR(dragging.Luminance / still.Luminance, 1.0, 0.15)
+    << "the dragging frame's brightness differs from the still frame's";
+  EXPECT_NEAR(dragging.Redness, still.Redness, 0.01)
+    << "the dragging frame's colours differ from the still frame's (pink bone)";
 }
 
 // MaximumTransportVoxels: the same head sampled more finely is lit as the original. The CT

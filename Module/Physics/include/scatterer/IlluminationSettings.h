@@ -96,6 +96,15 @@ inline int interactiveTransportScaleFor(int scale, int interactiveScale, int sti
   const int raised = (interactiveScale * stillScale + s - 1) / s;
   return interactiveScale > raised ? interactiveScale : raised;
 }
+// Volume voxels a texel of the diffusion's grid spans along each axis, when a still
+// frame's transport scale is `stillScale`: about 4 (the diffusion's reach per iteration
+// then stays the same) and at least 2 transport voxels. Frames built coarser while the
+// user drags keep it (CoarseGrid::Over, Module/Transport).
+inline int diffusionVoxelsFor(int stillScale)
+{
+  const int s = stillScale > 1 ? stillScale : 1;
+  return 2 * s > 4 ? 2 * s : 4;
+}
 // Transport mode: strength of the diffusion term (1 physical, 0 single scattering only).
 inline constexpr Setting<double> MultipleScattering{ "MultipleScattering", 1.0, 0.0, 16.0 };
 
