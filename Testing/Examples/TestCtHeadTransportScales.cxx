@@ -116,19 +116,30 @@ std::vector<unsigned char> RenderCtHeadScene(vtkImageData* image,
 }
 }
 
-TEST(CtHeadTransportScales, CoarserTransportKeepsTheColours)
+/** The tests below read the prepared CT head, and skip when it is missing. */
+class CtHeadTransportScales : public ::testing::Test
 {
-  if (!std::filesystem::exists(se::CtHeadPath()))
+protected:
+  void SetUp() override
   {
-    GTEST_SKIP() << se::CtHeadPath() << " is missing (bash scripts/prepare-data.sh)";
+    if (!std::filesystem::exists(se::CtHeadPath()))
+    {
+      GTEST_SKIP() << se::CtHeadPath() << " is missing (bash scripts/prepare-data.sh)";
+    }
+    std::string error;
+    this->Head = se::ReadVolumeOrCtHead("", error);
+    ASSERT_TRUE(this->Head) << error;
   }
-  std::string error;
-  vtkSmartPointer<vtkImageData> image = se::ReadVolumeOrCtHead("", error);
-  ASSERT_TRUE(image) << error;
+
+  vtkSmartPointer<vtkImageData> Head;
+};
+
+TEST_F(CtHeadTransportScales, CoarserTransportKeepsTheColours)
+{
   auto render = [&](int scale)
   {
-    return RenderCtHeadScene(
-      image, [&](vtkScattererTemplateVolumeMapper* mapper) { mapper->SetTransportScale(scale); });
+    return RenderCtHeadScene(this->Head,
+      [&](vtkScattererTemplateVolumeMapper* mapper) { mapper->SetTransportScale(scale); });
   };
   // Measured at 300x300: scale 2 has 19.5; scales 3 and 4 had 32.5 and 39.5 with the
   // bug, 20.0 and 23.0 without.
@@ -151,25 +162,18 @@ TEST(CtHeadTransportScales, CoarserTransportKeepsTheColours)
 // is 7 % brighter: 101.4 against 94.7 without multiple scattering); with 8-voxel blocks
 // 119.7, 0.0937, and with those blocks' medium averaged over 2^3 points per fine texel
 // 140.6, 0.1018.
-TEST(CtHeadTransportScales, ADraggingFrameKeepsTheStillColours)
+TEST_F(CtHeadTransportScales, ADraggingFrameKeepsTheStillColours)
 {
-  if (!std::filesystem::exists(se::CtHeadPath()))
-  {
-    GTEST_SKIP() << se::CtHeadPath() << " is missing (bash scripts/prepare-data.sh)";
-  }
-  std::string error;
-  vtkSmartPointer<vtkImageData> image = se::ReadVolumeOrCtHead("", error);
-  ASSERT_TRUE(image) << error;
   int scale = 0;
   auto render = [&](double updateRate)
   {
     return RenderCtHeadScene(
-      image,
+      this->Head,
       [&](vtkScattererTemplateVolumeMapper* mapper)
       {
         mapper->SetTransportScale(2);
         mapper->SetInteractiveTransportScale(4);
-        scale = mapper->GetEffectiveTransportScale(image->GetDimensions(), updateRate > 1.0);
+        scale = mapper->GetEffectiveTransportScale(this->Head->GetDimensions(), updateRate > 1.0);
       },
       updateRate);
   };
@@ -191,19 +195,12 @@ TEST(CtHeadTransportScales, ADraggingFrameKeepsTheStillColours)
 // budget (0) it is built at scale 2, with a finer diffusion, and looks different.
 // Measured (160x160): RMS 0.024 from the original under the budget, 0.054 at scale 2;
 // the rule left out (the budget ignored), 0.054 and 0.054.
-TEST(CtHeadTransportScales, AResampledHeadIsLitAsTheOriginal)
+TEST_F(CtHeadTransportScales, AResampledHeadIsLitAsTheOriginal)
 {
-  if (!std::filesystem::exists(se::CtHeadPath()))
-  {
-    GTEST_SKIP() << se::CtHeadPath() << " is missing (bash scripts/prepare-data.sh)";
-  }
-  std::string error;
-  vtkSmartPointer<vtkImageData> head = se::ReadVolumeOrCtHead("", error);
-  ASSERT_TRUE(head) << error;
   int dims[3];
-  head->GetDimensions(dims);
+  this->Head->GetDimensions(dims);
   vtkNew<vtkImageResize> resize;
-  resize->SetInputData(head);
+  resize->SetInputData(this->Head);
   resize->SetOutputDimensions((3 * dims[0]) / 2, (3 * dims[1]) / 2, (3 * dims[2]) / 2);
   resize->Update();
   vtkImageData* resampled = resize->GetOutput();
@@ -221,7 +218,7 @@ TEST(CtHeadTransportScales, AResampledHeadIsLitAsTheOriginal)
         }
       });
   };
-  const std::vector<unsigned char> original = render(head, budget, nullptr);
+  const std::vector<unsigned char> original = render(this->Head, budget, nullptr);
   const std::vector<unsigned char> lit = render(resampled, budget, &scales[0]);
   const std::vector<unsigned char> unlimited = render(resampled, 0, &scales[1]);
   EXPECT_EQ(scales[0], 3);
