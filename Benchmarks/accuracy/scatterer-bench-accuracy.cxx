@@ -1,6 +1,7 @@
 // The accuracy / time trade-off benchmark (docs/accuracy.md; not part of the tests).
 //
-// For each scene (the CT head at a reduced size, the synthetic shell + plate scene):
+// For each scene (the CT head at a reduced size, the synthetic shell + plate scene, and
+// the same lit by a point light):
 // renders the converged Monte Carlo reference (Reference; cached in OUT as
 // reference-<scene>-<spp>spp.vti), then every GPU configuration (stock composite, stock
 // Phong, template illumination over a quality ladder, a brute-force template setting)
@@ -244,7 +245,8 @@ void ExportScene(const scatterer_reference_vtk::VtkScene& scene, int width, int 
     f << (first ? "" : ", ") << "{\"positional\": " << (l->GetPositional() ? "true" : "false")
       << ", \"position\": [" << lp[0] << ", " << lp[1] << ", " << lp[2] << "], \"focal_point\": ["
       << lf[0] << ", " << lf[1] << ", " << lf[2] << "], \"intensity\": " << l->GetIntensity()
-      << ", \"diffuse_color\": [" << dc[0] << ", " << dc[1] << ", " << dc[2] << "]}";
+      << ", \"cone_angle\": " << l->GetConeAngle() << ", \"diffuse_color\": [" << dc[0] << ", "
+      << dc[1] << ", " << dc[2] << "]}";
     first = false;
   }
   f << "]}\n";
@@ -364,8 +366,8 @@ void WritePlot(const std::vector<Row>& rows, const std::string& scene, const std
 int main(int argc, char* argv[])
 {
   int frames = 3, width = 256, height = 256, spp = 1024;
-  std::string out = "accuracy-benchmark", scenes = "ct-head,shell-plate", only, peerPython,
-              peerScript;
+  std::string out = "accuracy-benchmark", scenes = "ct-head,shell-plate,shell-plate-point", only,
+              peerPython, peerScript;
   for (int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
@@ -388,7 +390,7 @@ int main(int argc, char* argv[])
     else
     {
       std::cerr << "usage: scatterer-bench-accuracy [--size WxH] [--frames N] [--spp N] "
-                   "[--scenes ct-head,shell-plate] [--configs a,b] [--out DIR]\n"
+                   "[--scenes ct-head,shell-plate,shell-plate-point] [--configs a,b] [--out DIR]\n"
                    "         [--peer-python 'PYTHONPATH=... /usr/bin/python3' --peer-script "
                    "vtk92_scattering_peer.py]\n";
       return 2;

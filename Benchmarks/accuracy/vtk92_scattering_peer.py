@@ -99,6 +99,7 @@ def main():
             light.SetPositional(l["positional"])
             light.SetPosition(*l["position"])
             light.SetFocalPoint(*l["focal_point"])
+            light.SetConeAngle(l.get("cone_angle", 30.0))
             light.SetIntensity(l["intensity"])
             light.SetDiffuseColor(*l["diffuse_color"])
             light.SetAmbientColor(1, 1, 1)

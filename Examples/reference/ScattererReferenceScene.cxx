@@ -117,6 +117,26 @@ void MakeHardScene(VtkScene& scene, int n)
   scene.SampleDistance = 0.5;
 }
 
+void MakeHardPointLightScene(VtkScene& scene, int n)
+{
+  MakeHardScene(scene, n);
+  scene.Name =
+    std::max(n, 8) == 96 ? "shell-plate-point" : "shell-plate-point-" + std::to_string(n);
+  scene.Renderer->RemoveAllLights();
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->PositionalOn();
+  light->SetConeAngle(180.0); // a point light: no cone
+  // Outside the box, 35 units behind the plate and below its lower edge: the edge's
+  // shadow crosses the top of the shell (z about 62 at its centre), its lines spread 2.2
+  // times from the plate to there.
+  light->SetPosition(-20.0, 48.0, 40.0);
+  light->SetFocalPoint(48.0, 48.0, 48.0);
+  light->SetIntensity(1.0);
+  light->SetDiffuseColor(1.0, 1.0, 1.0);
+  scene.Renderer->AddLight(light);
+}
+
 void ApplySceneView(const VtkScene& scene, vtkRenderer* renderer)
 {
   renderer->GetActiveCamera()->DeepCopy(scene.Renderer->GetActiveCamera());
@@ -338,7 +358,12 @@ bool MakeNamedScene(const std::string& name, VtkScene& scene, std::string& error
     MakeHardScene(scene);
     return true;
   }
-  error = "unknown scene '" + name + "' (ct-head or shell-plate)";
+  if (name == "shell-plate-point")
+  {
+    MakeHardPointLightScene(scene);
+    return true;
+  }
+  error = "unknown scene '" + name + "' (ct-head, shell-plate or shell-plate-point)";
   exitCode = 2;
   return false;
 }

@@ -49,8 +49,12 @@ bool MakeCtHeadScene(VtkScene& scene, std::string* error);
  * (spacing 95 / (n - 1)); its name is then "shell-plate-<n>". */
 void MakeHardScene(VtkScene& scene, int n = 96);
 
+/** The hard scene lit by a point light (no cone, no attenuation) instead, outside the
+ * box behind the plate: its name is "shell-plate-point" ("shell-plate-point-<n>"). */
+void MakeHardPointLightScene(VtkScene& scene, int n = 96);
+
 /**
- * "ct-head" or "shell-plate": fills @p scene. On failure returns false with
+ * "ct-head", "shell-plate" or "shell-plate-point": fills @p scene. On failure returns false with
  * @p error saying why (a missing CT head names scripts/prepare-data.sh) and
  * @p exitCode 1 (missing data) or 2 (unknown name).
  */

@@ -29,7 +29,8 @@ namespace
 {
 struct ReferenceOptions
 {
-  std::string Scene = "ct-head"; // ct-head | shell-plate | auto (auto: --input only)
+  std::string Scene =
+    "ct-head"; // ct-head | shell-plate | shell-plate-point | auto (auto: --input only)
   std::string Input, Output = "reference", Exposure = "auto";
   int Width = 256, Height = 256;
   bool Quiet = false;
@@ -70,13 +71,14 @@ int ParseArgs(
   CLI::Option* scene = scatterer_examples::AddValueOption(app, "--scene", "SCENE",
     "ct-head (default: the prepared CT head, " + scatterer_examples::CtHeadPath() +
       ",\nmade by scripts/prepare-data.sh in the source tree, or --input in that scene),\n"
-      "shell-plate (synthetic), or auto (--input with automatic transfer functions)",
+      "shell-plate (synthetic), shell-plate-point (lit by a point light), or auto (--input\n"
+      "with automatic transfer functions)",
     [&o](const std::string& v)
     {
-      if (v != "ct-head" && v != "shell-plate" && v != "auto")
+      if (v != "ct-head" && v != "shell-plate" && v != "shell-plate-point" && v != "auto")
       {
         scatterer_examples::ThrowUsageError(
-          "--scene must be ct-head, shell-plate or auto, got '" + v + "'");
+          "--scene must be ct-head, shell-plate, shell-plate-point or auto, got '" + v + "'");
       }
       o.Scene = v;
     });
@@ -119,10 +121,10 @@ int ParseArgs(
   app.callback(
     [&]()
     {
-      if (o.Scene == "shell-plate" && input->count() > 0)
+      if ((o.Scene == "shell-plate" || o.Scene == "shell-plate-point") && input->count() > 0)
       {
-        scatterer_examples::ThrowConflict("--scene shell-plate", "--input",
-          "shell-plate is a built-in volume; for a file use --scene ct-head or auto");
+        scatterer_examples::ThrowConflict("--scene " + o.Scene, "--input",
+          o.Scene + " is a built-in volume; for a file use --scene ct-head or auto");
       }
       if (o.Scene == "auto" && scene->count() > 0 && input->count() == 0)
       {
