@@ -341,6 +341,13 @@ bool WriteFloatImage(vtkImageData* image, const std::string& path)
   return w->Write() == 1;
 }
 
+const char* const kNamedScenes = "ct-head, shell-plate or shell-plate-point";
+
+bool IsNamedScene(const std::string& name)
+{
+  return name == "ct-head" || name == "shell-plate" || name == "shell-plate-point";
+}
+
 bool MakeNamedScene(const std::string& name, VtkScene& scene, std::string& error, int& exitCode)
 {
   if (name == "ct-head")
@@ -363,7 +370,7 @@ bool MakeNamedScene(const std::string& name, VtkScene& scene, std::string& error
     MakeHardPointLightScene(scene);
     return true;
   }
-  error = "unknown scene '" + name + "' (ct-head, shell-plate or shell-plate-point)";
+  error = "unknown scene '" + name + "' (" + kNamedScenes + ")";
   exitCode = 2;
   return false;
 }

@@ -53,10 +53,18 @@ void MakeHardScene(VtkScene& scene, int n = 96);
  * box behind the plate: its name is "shell-plate-point" ("shell-plate-point-<n>"). */
 void MakeHardPointLightScene(VtkScene& scene, int n = 96);
 
+/** The named scenes MakeNamedScene knows, in words: "ct-head, shell-plate or
+ * shell-plate-point". */
+extern const char* const kNamedScenes;
+
+/** True when @p name is one of kNamedScenes; the others but "ct-head" are built in
+ * (synthetic volumes, no file to read). */
+bool IsNamedScene(const std::string& name);
+
 /**
- * "ct-head", "shell-plate" or "shell-plate-point": fills @p scene. On failure returns false with
- * @p error saying why (a missing CT head names scripts/prepare-data.sh) and
- * @p exitCode 1 (missing data) or 2 (unknown name).
+ * One of kNamedScenes: fills @p scene. On failure returns false with @p error saying why
+ * (a missing CT head names scripts/prepare-data.sh) and @p exitCode 1 (missing data) or 2
+ * (unknown name).
  */
 bool MakeNamedScene(const std::string& name, VtkScene& scene, std::string& error, int& exitCode);
 

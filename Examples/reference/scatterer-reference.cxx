@@ -29,8 +29,8 @@ namespace
 {
 struct ReferenceOptions
 {
-  std::string Scene =
-    "ct-head"; // ct-head | shell-plate | shell-plate-point | auto (auto: --input only)
+  // A named scene (scatterer_reference_vtk::kNamedScenes) or auto (--input only).
+  std::string Scene = "ct-head";
   std::string Input, Output = "reference", Exposure = "auto";
   int Width = 256, Height = 256;
   bool Quiet = false;
@@ -64,8 +64,8 @@ int ParseArgs(
   scatterer_examples::SetUpCommandLine(app);
   app.footer("Numbers are plain decimal integers (as in scatterer-render); every option takes\n"
              "--opt VALUE or --opt=VALUE, at most once (again only with the same value).\n"
-             "Refused as contradictory: --scene shell-plate with --input (a built-in volume),\n"
-             "--scene auto without --input.\n"
+             "Refused as contradictory: --scene shell-plate or shell-plate-point with --input (a\n"
+             "built-in volume), --scene auto without --input.\n"
              "Exit status: 0 the images were written; 1 the volume or the prepared CT head cannot\n"
              "be read, or an image cannot be written; 2 a bad command line (usage error).\n");
   CLI::Option* scene = scatterer_examples::AddValueOption(app, "--scene", "SCENE",
@@ -75,10 +75,10 @@ int ParseArgs(
       "with automatic transfer functions)",
     [&o](const std::string& v)
     {
-      if (v != "ct-head" && v != "shell-plate" && v != "shell-plate-point" && v != "auto")
+      if (!scatterer_reference_vtk::IsNamedScene(v) && v != "auto")
       {
-        scatterer_examples::ThrowUsageError(
-          "--scene must be ct-head, shell-plate, shell-plate-point or auto, got '" + v + "'");
+        scatterer_examples::ThrowUsageError("--scene must be " +
+          std::string(scatterer_reference_vtk::kNamedScenes) + ", or auto, got '" + v + "'");
       }
       o.Scene = v;
     });
@@ -121,7 +121,8 @@ int ParseArgs(
   app.callback(
     [&]()
     {
-      if ((o.Scene == "shell-plate" || o.Scene == "shell-plate-point") && input->count() > 0)
+      const bool builtIn = scatterer_reference_vtk::IsNamedScene(o.Scene) && o.Scene != "ct-head";
+      if (builtIn && input->count() > 0)
       {
         scatterer_examples::ThrowConflict("--scene " + o.Scene, "--input",
           o.Scene + " is a built-in volume; for a file use --scene ct-head or auto");

@@ -2,9 +2,10 @@
 // transport volume) must stay clearly closer to the Monte Carlo reference
 // (Reference, rendered here, deterministic by seed) than stock Phong shading,
 // in RMSE and SSIM after the least-squares exposure normalisation of Metrics.h. The
-// plate shadows the shell from the light, a directional one and a point light: Phong has
-// no shadows, so a transport that lost them (a broken sweep, no occlusion) fails here. It does not
-// guard the multiple-scattering term: without it the transport is even closer on this scene.
+// plate shadows the shell from the light, a directional one and a point light: Phong
+// has no shadows, so a transport that lost them (a broken sweep, no occlusion) fails
+// here. It does not guard the multiple-scattering term: without it the transport is even
+// closer on this scene.
 #include "Common/ScattererMapperSetup.h"
 #include "ScattererReferenceScene.h"
 #include "ScattererRenderHarness.h"
