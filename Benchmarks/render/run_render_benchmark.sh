@@ -2,7 +2,8 @@
 # Render benchmark on the real CT head scene (512x512) and on the CT head resampled
 # to 383x383x161 and 511x511x215: stock composite, stock Phong, the light transport
 # volume still and orbiting under the headlight (rebuilt every frame), the per-sample
-# photon test; at every size the orbit under ParaView's light kit (5 lights). Frame-time
+# photon test, a point light circling the head (camera still); at every size the orbit
+# under ParaView's light kit (5 lights). Frame-time
 # ratios are measured in one process per volume size; the build_*_ms columns say where
 # each rebuild's time goes. Then peak memory, one configuration per process, at
 # 511x511x215.

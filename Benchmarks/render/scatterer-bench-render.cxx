@@ -1,7 +1,8 @@
 // Render benchmark on the CT head scene (shared/scenes/ct-head.json): frame times of
 // stock composite, stock Phong, the light transport volume and the per-sample photon
 // test, with the camera still and orbiting under the renderer's headlight (the light
-// moves every frame, so the transport volume is rebuilt every frame), and of a
+// moves every frame, so the transport volume is rebuilt every frame), under a point light
+// circling the head (camera still; a positional light's sweep every frame), and of a
 // vtkMultiVolume (the CT head and a ball above it), all in one process after a
 // warm-up frame each. Optionally on the CT head resampled to other
 // dimensions (the same physical extent). Writes a CSV row per configuration and a PNG
@@ -29,7 +30,9 @@
 #include "vtkGPUVolumeRayCastMapper.h"
 #include "vtkImageData.h"
 #include "vtkImageResize.h"
+#include "vtkLight.h"
 #include "vtkLightKit.h"
+#include "vtkMath.h"
 #include "vtkMultiVolume.h"
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
@@ -44,6 +47,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -63,6 +67,9 @@ struct Config
   bool Interactive = false; // frames as VTK's interactor asks while dragging (rate 20/s)
   bool Multi = false;       // a vtkMultiVolume: the CT head and a ball above it (MultiScene)
   bool LightKit = false;    // orbit under vtkLightKit (5 camera lights, ParaView's default)
+  // camera still, one point light (a scene light, no cone) circling the volume 2 degrees
+  // a frame: a positional light's sweep rebuilt every frame
+  bool PointLight = false;
 };
 
 std::vector<Config> Configs()
@@ -76,6 +83,7 @@ std::vector<Config> Configs()
     { "transport_orbit_headlight_interactive", "template", "transport", true, true },
     { "transport_orbit_lightkit", "template", "transport", true, false, false, true },
     { "transport_orbit_lightkit_interactive", "template", "transport", true, true, false, true },
+    { "transport_point_light_moving", "template", "transport", false, false, false, false, true },
     { "persample_still", "template", "per-sample" },
     { "stock_multivolume", "stock", "transport", false, false, true },
     { "transport_multivolume_still", "template", "transport", false, false, true },
@@ -288,6 +296,50 @@ int main(int argc, char* argv[])
       vtkNew<vtkLightKit> kit;
       kit->AddLightsToRenderer(renderer);
     }
+    vtkNew<vtkLight> pointLight;
+    double centre[3] = { 0, 0, 0 }, radius = 1.0, toward[3] = { 0, 0, 1 }, up[3] = { 0, 1, 0 },
+           right[3] = { 1, 0, 0 };
+    if (config.PointLight)
+    {
+      // 1.5 bounding radii from the head's centre, on a circle through the camera's side
+      // of it, above the centre.
+      const double* b = image->GetBounds();
+      for (int a = 0; a < 3; ++a)
+      {
+        centre[a] = 0.5 * (b[2 * a] + b[2 * a + 1]);
+      }
+      radius = 0.75 *
+        std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
+          (b[5] - b[4]) * (b[5] - b[4]));
+      vtkCamera* camera = renderer->GetActiveCamera();
+      camera->GetDirectionOfProjection(toward);
+      camera->GetViewUp(up);
+      vtkMath::Cross(toward, up, right);
+      vtkMath::Normalize(right);
+      renderer->AutomaticLightCreationOff();
+      renderer->RemoveAllLights();
+      pointLight->SetLightTypeToSceneLight();
+      pointLight->PositionalOn();
+      pointLight->SetConeAngle(180.0);
+      pointLight->SetFocalPoint(centre);
+      renderer->AddLight(pointLight);
+    }
+    // The point light at `degrees` on its circle (0: between the camera and the head).
+    const auto placePointLight = [&](double degrees)
+    {
+      const double t = vtkMath::RadiansFromDegrees(degrees);
+      double p[3];
+      for (int a = 0; a < 3; ++a)
+      {
+        p[a] = centre[a] + radius * (std::sin(t) * right[a] - std::cos(t) * toward[a]) +
+          0.5 * radius * up[a];
+      }
+      pointLight->SetPosition(p);
+    };
+    if (config.PointLight)
+    {
+      placePointLight(30.0);
+    }
     window->GetRenderers()->RemoveAllItems();
     window->AddRenderer(renderer);
     window->SetDesiredUpdateRate(config.Interactive ? 20.0 : 0.0001);
@@ -300,6 +352,10 @@ int main(int argc, char* argv[])
       if (config.Orbit)
       {
         renderer->GetActiveCamera()->Azimuth(2.0);
+      }
+      if (config.PointLight)
+      {
+        placePointLight(30.0 + 2.0 * (f + 1));
       }
       const auto start = std::chrono::steady_clock::now();
       window->Render();
