@@ -303,14 +303,8 @@ int main(int argc, char* argv[])
     {
       // 1.5 bounding radii from the head's centre, on a circle through the camera's side
       // of it, above the centre.
-      const double* b = image->GetBounds();
-      for (int a = 0; a < 3; ++a)
-      {
-        centre[a] = 0.5 * (b[2 * a] + b[2 * a + 1]);
-      }
-      radius = 0.75 *
-        std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
-          (b[5] - b[4]) * (b[5] - b[4]));
+      image->GetCenter(centre);
+      radius = 0.75 * image->GetLength(); // the bounding box's diagonal
       vtkCamera* camera = renderer->GetActiveCamera();
       camera->GetDirectionOfProjection(toward);
       camera->GetViewUp(up);
