@@ -538,6 +538,21 @@ std::string FramePlanner::PlanFeatures(vtkVolume* vol, const VolumeSource& sourc
   f.Phong = vol->GetProperty()->GetShade() != 0;
   f.Parts = static_cast<int>(plan.Parts.size());
   f.LabelMask = source.Mask && source.LabelMapMask;
+  // Ray samples per light read: the still frames' step against the still frames'
+  // transport texel (the same program while the user drags).
+  f.LightStride = 1;
+  if (f.Transport && f.Parts == 0)
+  {
+    auto* image = vtkImageData::SafeDownCast(source.Input);
+    int dims[3] = { 1, 1, 1 };
+    if (image)
+    {
+      image->GetDimensions(dims);
+    }
+    f.LightStride = std::min(requests.MaximumLightStride,
+      il::lightReadStride(
+        source.StillRayStep, parameters.TransportScaleFor(dims, false) * source.VoxelSize));
+  }
   if (automatic && !f.Shadow && !f.Bleed && !f.Boundary)
   {
     return "no illumination effect is switched on";

@@ -14,6 +14,7 @@
 #include "ScattererSceneLights.h"
 #include "ScattererSceneMaterials.h"
 #include "ScattererShaderComposer.h"
+#include "scatterer/IlluminationSettings.h"
 
 #include "vtkNew.h"
 
@@ -81,6 +82,12 @@ struct VolumeSource
   int BlendMode = 0;
   bool UseDepthPass = false;
   double SampleDistance = 1.0; ///< vtkVolumeMapper's SampleDistance (world units)
+  /// The ray caster's step between samples on still frames, as VTK 9.1 picks it from
+  /// SampleDistance, AutoAdjustSampleDistances and LockSampleDistanceToInputSpacing
+  /// (world units; 0: unknown).
+  double StillRayStep = 0.0;
+  /// A voxel's size in the world: the geometric mean of its edges (0: unknown).
+  double VoxelSize = 0.0;
   int ScalarMode = 0, ArrayAccessMode = 0, ArrayId = -1;
   const char* ArrayName = nullptr;
   /// A vtkMultiVolume: each input port's data and volume, ports ascending (empty: one volume).
@@ -97,6 +104,8 @@ struct PlanRequests
 {
   const std::vector<scatterer_scene::RequestedMaterial>* Materials = nullptr;
   std::string ExtraGLSL; ///< for tests: appended to the declarations
+  /// for tests: at most this many samples per light read (1: every sample reads it)
+  int MaximumLightStride = scatterer::illumination::kMaximumLightReadStride;
   const KeySet* FailedShaders = nullptr;
 };
 

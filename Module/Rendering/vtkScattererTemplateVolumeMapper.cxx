@@ -18,6 +18,7 @@
 #include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
 #include "vtkImageData.h"
+#include "vtkMatrix4x4.h"
 #include "vtkMultiVolume.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -59,6 +60,7 @@ struct vtkScattererTemplateVolumeMapper::vtkInternals
 
   std::vector<scatterer_scene::RequestedMaterial> Requested;
   std::string ExtraGLSL;
+  int MaximumLightStride = scatterer::illumination::kMaximumLightReadStride;
   scatterer_render::WarnOnce Warn;
 
   scatterer_render::FramePlanner Planner;
@@ -293,6 +295,11 @@ void vtkScattererTemplateVolumeMapper::SetExtraShaderCodeForTesting(const std::s
   this->Internals->ExtraGLSL = glsl;
 }
 
+void vtkScattererTemplateVolumeMapper::SetMaximumLightReadStrideForTesting(int stride)
+{
+  this->Internals->MaximumLightStride = std::max(1, stride);
+}
+
 void vtkScattererTemplateVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Internals->Transport.ReleaseGraphicsResources(window);
@@ -391,6 +398,50 @@ void vtkScattererTemplateVolumeMapper::RenderStock(
   this->Superclass::GPURender(ren, vol);
 }
 
+void vtkScattererTemplateVolumeMapper::StillSampling(
+  vtkVolume* vol, double& rayStep, double& voxelSize)
+{
+  rayStep = voxelSize = 0.0;
+  auto* image = vtkImageData::SafeDownCast(this->GetInput());
+  if (!image || !vol)
+  {
+    return;
+  }
+  double spacing[3];
+  int extent[6];
+  image->GetSpacing(spacing);
+  image->GetExtent(extent);
+  // The voxel's edges in the world: the spacing scaled by the volume's matrix (an image's
+  // direction matrix only turns them), as VTK 9.1 measures them for its step.
+  vtkMatrix4x4* matrix = vol->GetMatrix();
+  double edges[3], smallest = VTK_DOUBLE_MAX;
+  for (int a = 0; a < 3; ++a)
+  {
+    double squared = 0.0;
+    for (int r = 0; r < 3; ++r)
+    {
+      squared += matrix->GetElement(r, a) * matrix->GetElement(r, a);
+    }
+    edges[a] = std::fabs(spacing[a]) * std::sqrt(squared);
+    smallest = std::min(smallest, edges[a]);
+  }
+  voxelSize = std::cbrt(edges[0] * edges[1] * edges[2]);
+  // vtkOpenGLGPUVolumeRayCastMapper::vtkInternal::UpdateSamplingDistance (9.1), without
+  // the reduction of frames rendered while the user drags.
+  if (this->GetAutoAdjustSampleDistances())
+  {
+    rayStep = smallest;
+  }
+  else if (this->GetLockSampleDistanceToInputSpacing())
+  {
+    rayStep = this->SpacingAdjustedSampleDistance(spacing, extent);
+  }
+  else
+  {
+    rayStep = this->GetSampleDistance();
+  }
+}
+
 std::string vtkScattererTemplateVolumeMapper::PlanFrame(vtkRenderer* ren, vtkVolume* vol,
   const scatterer_render::IlluminationParameters& parameters, scatterer_render::FramePlan& plan)
 {
@@ -402,6 +453,7 @@ std::string vtkScattererTemplateVolumeMapper::PlanFrame(vtkRenderer* ren, vtkVol
   source.BlendMode = this->GetBlendMode();
   source.UseDepthPass = this->GetUseDepthPass() != 0;
   source.SampleDistance = this->GetSampleDistance();
+  this->StillSampling(vol, source.StillRayStep, source.VoxelSize);
   source.ScalarMode = this->ScalarMode;
   source.ArrayAccessMode = this->ArrayAccessMode;
   source.ArrayId = this->ArrayId;
@@ -420,6 +472,7 @@ std::string vtkScattererTemplateVolumeMapper::PlanFrame(vtkRenderer* ren, vtkVol
   scatterer_render::PlanRequests requests;
   requests.Materials = &in.Requested;
   requests.ExtraGLSL = in.ExtraGLSL;
+  requests.MaximumLightStride = in.MaximumLightStride;
   requests.FailedShaders = &in.FailedShaders;
   const std::string stock = in.Planner.Plan(ren, vol, source, parameters, requests, in.Warn, plan);
   if (plan.MaterialsBuilt)

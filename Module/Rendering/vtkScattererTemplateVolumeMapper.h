@@ -439,6 +439,12 @@ public:
    */
   void SetExtraShaderCodeForTesting(const std::string& glsl);
 
+  /**
+   * For tests: at most this many ray samples share a read of the light transport volume
+   * (1: every sample reads it; by default as many as lightReadStride allows).
+   */
+  void SetMaximumLightReadStrideForTesting(int stride);
+
 protected:
   vtkScattererTemplateVolumeMapper();
   ~vtkScattererTemplateVolumeMapper() override;
@@ -489,6 +495,9 @@ private:
   // settings as one VTK-free record (Module/Rendering/Scatterer*.h).
   /** The settings, gathered for the helpers of one frame. */
   scatterer_render::IlluminationParameters GatherParameters() const;
+  /** The ray caster's step on still frames and a voxel's size, in world units
+   * (VolumeSource::StillRayStep, VolumeSource::VoxelSize; 0 if unknown). */
+  void StillSampling(vtkVolume* vol, double& rayStep, double& voxelSize);
   /** What this frame needs, or why this volume renders as stock ("" if it can be lit). */
   std::string PlanFrame(vtkRenderer* ren, vtkVolume* vol,
     const scatterer_render::IlluminationParameters& parameters, scatterer_render::FramePlan& plan);

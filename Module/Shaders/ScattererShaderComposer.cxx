@@ -14,13 +14,24 @@
 
 namespace scatterer_shader
 {
+namespace
+{
+// Transport on one volume with samples that share a light read: the composite step is
+// written out LightStride times (scatterer_shading_impl.glsl).
+bool Grouped(const Features& f)
+{
+  return f.Transport && f.Parts == 0 && f.LightStride > 1;
+}
+}
+
 bool Features::operator==(const Features& o) const
 {
   return this->Lights == o.Lights && this->Materials == o.Materials && this->Shadow == o.Shadow &&
     this->Thin == o.Thin && this->Bleed == o.Bleed && this->Boundary == o.Boundary &&
     this->Positional == o.Positional && this->Blend2 == o.Blend2 && this->Phong == o.Phong &&
     this->Transport == o.Transport && this->LabelMask == o.LabelMask &&
-    this->Components == o.Components && this->Parts == o.Parts;
+    this->Components == o.Components && this->Parts == o.Parts &&
+    this->LightStride == o.LightStride;
 }
 
 std::string Features::Describe() const
@@ -43,6 +54,10 @@ std::string Features::Describe() const
   if (this->Parts > 0)
   {
     out << " parts=" << this->Parts;
+  }
+  if (Grouped(*this))
+  {
+    out << " light-stride=" << this->LightStride;
   }
   return out.str();
 }
@@ -118,8 +133,8 @@ std::map<std::string, bool> Flags(const Features& f)
     { "BOUNDARY", f.Boundary && f.Materials > 1 }, { "POSITIONAL", f.Positional },
     { "BLEND2", f.Blend2 }, { "PHONG", f.Phong },
     { "FETCH", f.Shadow || f.Bleed || (f.Boundary && f.Materials > 1) },
-    { "TRANSPORT", f.Transport }, { "PERSAMPLE", !f.Transport }, { "LABELMASK", f.LabelMask },
-    { "INDEPENDENT", f.Components == Features::Scalars::Independent },
+    { "TRANSPORT", f.Transport }, { "GROUPED", Grouped(f) }, { "PERSAMPLE", !f.Transport },
+    { "LABELMASK", f.LabelMask }, { "INDEPENDENT", f.Components == Features::Scalars::Independent },
     { "DEPENDENT", f.Components == Features::Scalars::Dependent }, { "MULTI", f.Parts > 0 } };
 }
 
@@ -127,6 +142,7 @@ std::map<std::string, bool> Flags(const Features& f)
 std::map<std::string, std::string> Values(const Features& f)
 {
   return { { "LIGHT_SLOTS", std::to_string(LightSlots(f)) },
+    { "LIGHT_STRIDE", std::to_string(f.LightStride) },
     { "MAX_MATERIALS", std::to_string(scatterer_scene::kMaxMaterials) } };
 }
 }
@@ -160,9 +176,26 @@ std::string ShadingInitialization(const Features& features)
 
 std::string ShadingImplementation(const Features& features)
 {
-  if (features.Parts <= 0)
+  if (features.Parts <= 0 && !Grouped(features))
   {
     return Preprocess(scatterer_shading_impl, Flags(features), Values(features));
+  }
+  if (features.Parts <= 0)
+  {
+    // One pass of VTK's ray loop composites LightStride samples, the first reading the
+    // light for all of them; the others carry VTK's per-sample tags, which VTK then
+    // fills in as it fills in its loop's own.
+    std::string text;
+    auto flags = Flags(features);
+    auto values = Values(features);
+    for (int k = 0; k < features.LightStride; ++k)
+    {
+      flags["GROUP_START"] = k == 0;
+      flags["GROUP_END"] = k == features.LightStride - 1;
+      values["K"] = std::to_string(k);
+      text += Preprocess(scatterer_shading_impl, flags, values);
+    }
+    return text;
   }
   // A vtkMultiVolume: VTK 9.1 numbers its inputs' samplers and transfer functions from 0
   // and their matrices from 1 (entry 0 is the box around them all).

@@ -41,6 +41,10 @@ struct SCATTERERTEMPLATE_EXPORT Features
   Scalars Components = Scalars::One;
   /// A vtkMultiVolume: its inputs (0: one volume), each composited as VTK does.
   int Parts = 0;
+  /// Transport, one volume: ray samples per read of the light transport volume (1, 2 or
+  /// 4; scatterer::illumination::lightReadStride). Above 1 the composite step is written
+  /// out that many times per pass of VTK's ray loop.
+  int LightStride = 1;
 
   bool operator==(const Features& o) const;
   bool operator!=(const Features& o) const { return !(*this == o); }

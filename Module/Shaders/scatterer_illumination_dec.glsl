@@ -19,7 +19,7 @@
 #define ST_MAX_MATERIALS @MAX_MATERIALS@
 
 //ST::IF TRANSPORT
-// Light above this level is compressed smoothly toward 1 (st_receivedLight).
+// Light above this level is compressed smoothly toward 1 (st_compressHighlights).
 // At 0.85 the CT head's mean lit luminance is 1.07x stock Phong's, no pixel clips,
 // and an unoccluded face toward a light (received light 1) shows 0.93 of its colour;
 // both benchmark scenes measured closer to the Monte Carlo reference than with 0.7,
@@ -27,18 +27,30 @@
 const float st_knee = 0.85;
 mat4 st_toTransport; // ray position -> light texture, set once per ray (shading init)
 
-// The light transport volume: the light the point at ray position `dataPos` receives,
+// The light transport volume at ray position `dataPos`: the light the point receives,
 // summed over the lights (global shadows, template in-scattering, multiple scattering,
 // VTK's ambient term occluded like the light): one texture read.
-vec3 st_receivedLight(vec3 dataPos)
+vec3 st_transportRead(vec3 dataPos)
 {
-  vec3 light = texture3D(st_transport, (st_toTransport * vec4(dataPos, 1.0)).xyz).rgb;
-  // Highlight compression: light above st_knee approaches 1 smoothly instead of
-  // clipping (multiple scattering makes dense, white materials glow well above
-  // what a display shows); below it the light is kept as it is.
+  return texture3D(st_transport, (st_toTransport * vec4(dataPos, 1.0)).xyz).rgb;
+}
+
+// Highlight compression: light above st_knee approaches 1 smoothly instead of
+// clipping (multiple scattering makes dense, white materials glow well above what a
+// display shows); below it the light is kept as it is.
+vec3 st_compressHighlights(vec3 light)
+{
   return mix(light, st_knee + (light - st_knee) / (1.0 + (light - st_knee) / (1.0 - st_knee)),
     step(vec3(st_knee), light));
 }
+//ST::IF GROUPED
+
+// Samples that share a light read: the light at the far end of the group, read by
+// its first sample (at the ray's start by the shading init). Below st_lightFloor the
+// geometric interpolation takes the light as that floor (no division by zero).
+vec3 st_lightEnd;
+const vec3 st_lightFloor = vec3(1.0e-4);
+//ST::ENDIF
 //ST::ENDIF
 
 //ST::IF PERSAMPLE

@@ -1,4 +1,32 @@
     // Composite step with scatterer-template illumination (ScattererTemplate).
+//ST::IF GROUPED
+//ST::IF GROUP_START
+    // @LIGHT_STRIDE@ samples share one read of the light transport volume
+    // (scatterer::illumination::lightReadStride): this one reads the light where the
+    // next group starts, and the samples between take the light between the two reads
+    // geometrically, L_k = L_0 (L_n / L_0)^(k/n): the optical depth interpolated
+    // linearly, exact where the light falls off as Beer-Lambert's exp(-tau) along the
+    // ray (docs/model.md, "Fewer light reads").
+    vec3 st_lightStart = st_lightEnd;
+    st_lightEnd = st_transportRead(g_dataPos + float(@LIGHT_STRIDE@) * g_dirStep);
+    vec3 st_lightStep = pow(max(st_lightEnd, st_lightFloor) / max(st_lightStart, st_lightFloor),
+      vec3(1.0 / float(@LIGHT_STRIDE@)));
+    vec3 st_light = max(st_lightStart, st_lightFloor);
+      {
+//ST::ELSE
+      {
+      // Sample @K@ of the group: the ray caster's own step to the next sample, and its
+      // per-sample code, as its loop runs them between two samples.
+      g_dataPos += g_dirStep;
+      //VTK::Terminate::Impl
+      //VTK::Base::Impl
+      //VTK::Cropping::Impl
+      //VTK::BinaryMask::Impl
+      //VTK::CompositeMask::Impl
+      //VTK::PreComputeGradients::Impl
+      st_light *= st_lightStep;
+//ST::ENDIF
+//ST::ENDIF
 //ST::IF PERSAMPLE
     st_step += 1;
 //ST::ENDIF
@@ -79,8 +107,13 @@
 //ST::IF TRANSPORT
         // The light transport volume: the light this point receives, summed over
         // the lights (global shadows, template in-scattering, multiple scattering,
-        // VTK's ambient term occluded like the light): one texture read.
-        st_F = st_receivedLight(g_dataPos);
+        // VTK's ambient term occluded like the light), between the group's reads or
+        // read here.
+//ST::IF GROUPED
+        st_F = st_compressHighlights(st_light);
+//ST::ELSE
+        st_F = st_compressHighlights(st_transportRead(g_dataPos));
+//ST::ENDIF
 //ST::ENDIF
 //ST::IF PERSAMPLE
         // A loop of 0 or 1 iterations rather than an if: a GPU skips a loop no
@@ -119,3 +152,11 @@
         g_fragColor = (1.0f - g_fragColor.a) * g_srcColor + g_fragColor;
         }
       }
+//ST::IF GROUPED
+//ST::IF GROUP_END
+//ST::ELSE
+      //VTK::RenderToImage::Impl
+      //VTK::DepthPass::Impl
+//ST::ENDIF
+      }
+//ST::ENDIF

@@ -20,6 +20,9 @@
   st_toTransport =
     st_datasetToTransport * in_textureDatasetMatrix[0] * inverse(in_cellToPoint[0]);
 //ST::ENDIF
+//ST::IF GROUPED
+  st_lightEnd = st_transportRead(g_dataPos);
+//ST::ENDIF
 //ST::ENDIF
 //ST::IF PERSAMPLE
   int st_cachedMaterial = -2;

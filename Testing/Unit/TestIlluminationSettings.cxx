@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 namespace il = scatterer::illumination;
 
 namespace
@@ -104,4 +106,23 @@ TEST(IlluminationSettings, ALargeVolumeIsBuiltAtTheScaleThatFitsTheBudget)
   EXPECT_LE(il::transportVoxelsAt(flat, il::transportScaleFor(1, flat, budget)), budget);
   const int one[3] = { 1, 1, 1 };
   EXPECT_EQ(il::transportScaleFor(3, one, 1), 3); // nothing to coarsen: it stops
+}
+
+TEST(IlluminationSettings, RaySamplesShareALightReadWhileTheirSpanFitsInATexel)
+{
+  // The CT head's benchmark scene: 0.5 mm steps, texels of 2 voxels of 0.96 x 0.96 x 1.5
+  // mm (geometric mean 2.22 mm): 4 samples span 2 mm.
+  EXPECT_EQ(il::lightReadStride(0.5, 2.22), 4);
+  EXPECT_EQ(il::lightReadStride(0.5, 2.0), 4); // exactly one texel
+  EXPECT_EQ(il::lightReadStride(0.5, 1.99), 2);
+  EXPECT_EQ(il::lightReadStride(0.957, 2.22), 2); // VTK's automatic step: one voxel
+  EXPECT_EQ(il::lightReadStride(1.2, 2.22), 1);
+  EXPECT_EQ(il::lightReadStride(0.01, 100.0), il::kMaximumLightReadStride);
+  // Nothing known, or nothing sensible: every sample reads the light.
+  for (double bad : { 0.0, -1.0, std::numeric_limits<double>::quiet_NaN(),
+         std::numeric_limits<double>::infinity() })
+  {
+    EXPECT_EQ(il::lightReadStride(bad, 2.0), 1) << bad;
+    EXPECT_EQ(il::lightReadStride(0.5, bad), 1) << bad;
+  }
 }

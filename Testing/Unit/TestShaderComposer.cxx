@@ -173,3 +173,50 @@ TEST(ShaderComposer, MultiVolumeCompositesEachInputWithItsOwnSamplerAndMatrices)
   EXPECT_FALSE(Has(scatterer_shader::ShadingInitialization(f), "in_volumeMatrix[0]"));
   EXPECT_FALSE(Has(scatterer_shader::ShadingImplementation(f), "in_colorTransferFunc_"));
 }
+
+TEST(ShaderComposer, SamplesThatShareALightReadCarryTheRayLoopsOwnStep)
+{
+  // One pass of VTK's ray loop composites LightStride samples and reads the light once.
+  // Each sample after the first must take the loop's own step and per-sample code (its
+  // termination, cropping, masks), which VTK fills in wherever its tags stand.
+  Features f;
+  f.LightStride = 4;
+  const std::string impl = scatterer_shader::ShadingImplementation(f);
+  auto count = [&](const std::string& token)
+  {
+    int n = 0;
+    for (auto at = impl.find(token); at != std::string::npos; at = impl.find(token, at + 1))
+    {
+      ++n;
+    }
+    return n;
+  };
+  EXPECT_EQ(count("texture3D(in_volume[0], g_dataPos)"), 4);
+  EXPECT_EQ(count("st_transportRead("), 1);
+  EXPECT_EQ(count("g_dataPos += g_dirStep;"), 3);
+  for (const char* tag :
+    { "//VTK::Terminate::Impl", "//VTK::Base::Impl", "//VTK::Cropping::Impl",
+      "//VTK::BinaryMask::Impl", "//VTK::CompositeMask::Impl", "//VTK::PreComputeGradients::Impl",
+      "//VTK::RenderToImage::Impl", "//VTK::DepthPass::Impl" })
+  {
+    EXPECT_EQ(count(tag), 3) << tag;
+  }
+  EXPECT_EQ(count("{"), count("}"));
+  EXPECT_FALSE(Has(impl, "@"));
+  EXPECT_TRUE(Has(scatterer_shader::ShadingInitialization(f), "st_lightEnd = st_transportRead"));
+  EXPECT_EQ(
+    f.Describe(), "transport lights=1 materials=1 shadow thin bleed boundary light-stride=4");
+
+  // Stride 1, the per-sample mode and a vtkMultiVolume read the light at every sample.
+  for (int variant = 0; variant < 3; ++variant)
+  {
+    Features g;
+    g.LightStride = variant == 0 ? 1 : 4;
+    g.Transport = variant != 1;
+    g.Parts = variant == 2 ? 2 : 0;
+    const std::string text = scatterer_shader::ShadingImplementation(g);
+    EXPECT_FALSE(Has(text, "//VTK::")) << variant;
+    EXPECT_FALSE(Has(text, "st_lightEnd")) << variant;
+    EXPECT_FALSE(Has(g.Describe(), "light-stride")) << variant;
+  }
+}

@@ -105,6 +105,26 @@ inline int diffusionVoxelsFor(int stillScale)
   const int s = stillScale > 1 ? stillScale : 1;
   return 2 * s > 4 ? 2 * s : 4;
 }
+// Transport mode: how many ray samples share one read of the light transport volume.
+// The stored light is trilinear over texels of `texelSize` (world units, the geometric
+// mean of a still frame's texel edges), so along a ray it has no detail finer than a
+// texel: the ray reads it every `stride` samples of `rayStep` as long as that span fits
+// in one texel, and the samples between two reads take the light interpolated between
+// them (scatterer_shading_impl.glsl). 4 at most: each shared read costs a copy of the
+// composite step in the shader (docs/rendering.md, "Fewer light reads"). 1: every
+// sample reads the light (also for steps or texels that are not positive and finite).
+inline constexpr int kMaximumLightReadStride = 4;
+inline int lightReadStride(double rayStep, double texelSize)
+{
+  if (!(rayStep > 0.0) || !(texelSize > 0.0) || !(texelSize < 1e300) || !(rayStep < 1e300)) {
+    return 1;
+  }
+  int stride = kMaximumLightReadStride;
+  while (stride > 1 && stride * rayStep > texelSize) {
+    stride /= 2;
+  }
+  return stride;
+}
 // Transport mode: strength of the diffusion term (1 physical, 0 single scattering only).
 inline constexpr Setting<double> MultipleScattering{ "MultipleScattering", 1.0, 0.0, 16.0 };
 
