@@ -2,6 +2,7 @@
 
 #include "vtkColorTransferFunction.h"
 #include "vtkDataArray.h"
+#include "vtkGPUVolumeRayCastMapper.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
@@ -90,5 +91,26 @@ vtkSmartPointer<vtkImageData> MakeComponentVolume(
         for (int c = 0; c < components; ++c)
           *p++ = fill(i, j, k, c);
   return image;
+}
+
+vtkSmartPointer<vtkImageData> MakeMaskBeyond(int dims, double cut, bool labels)
+{
+  return MakeComponentVolume(dims, 1,
+    [cut, labels](int i, int, int, int) -> unsigned char
+    { return labels ? (i > cut ? 2 : 1) : (i > cut ? 0 : 255); });
+}
+
+void HideLabelTwo(vtkGPUVolumeRayCastMapper* mapper, vtkVolumeProperty* property,
+  vtkImageData* labels, vtkColorTransferFunction* color, vtkPiecewiseFunction* opacity)
+{
+  vtkNew<vtkPiecewiseFunction> transparent;
+  transparent->AddPoint(0, 0.0);
+  transparent->AddPoint(255, 0.0);
+  mapper->SetMaskInput(labels);
+  mapper->SetMaskTypeToLabelMap();
+  property->SetLabelColor(1, color);
+  property->SetLabelScalarOpacity(1, opacity);
+  property->SetLabelColor(2, color);
+  property->SetLabelScalarOpacity(2, transparent);
 }
 }

@@ -7,7 +7,10 @@
 
 #include <functional>
 
+class vtkColorTransferFunction;
+class vtkGPUVolumeRayCastMapper;
 class vtkImageData;
+class vtkPiecewiseFunction;
 class vtkVolumeProperty;
 
 namespace scatterer_testing
@@ -30,6 +33,19 @@ using ComponentFill = std::function<unsigned char(int i, int j, int k, int c)>;
 /** A dims^3 unsigned-char volume of @p components components filled by @p fill. */
 vtkSmartPointer<vtkImageData> MakeComponentVolume(
   int dims, int components, const ComponentFill& fill);
+
+/**
+ * A dims^3 mask split at x = @p cut: binary (255 up to the cut, 0 beyond), or with
+ * @p labels a label map (label 1 up to the cut, 2 beyond).
+ */
+vtkSmartPointer<vtkImageData> MakeMaskBeyond(int dims, double cut, bool labels);
+
+/**
+ * @p labels (MakeMaskBeyond with labels) as @p mapper's label-map mask: label 1 drawn
+ * with @p color and @p opacity, label 2 transparent.
+ */
+void HideLabelTwo(vtkGPUVolumeRayCastMapper* mapper, vtkVolumeProperty* property,
+  vtkImageData* labels, vtkColorTransferFunction* color, vtkPiecewiseFunction* opacity);
 }
 
 #endif

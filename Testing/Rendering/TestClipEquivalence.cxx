@@ -15,6 +15,7 @@
 // lighting, and left out; what remains compares the lighting alone.
 #include "Common/ScattererMapperSetup.h"
 #include "ScattererRenderHarness.h"
+#include "ScattererTestVolumes.h"
 
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
@@ -79,21 +80,6 @@ enum class Removal
             // label 2 (zero opacity) beyond
 };
 
-// The mask of Removal::Mask (binary: 255 up to the cut, 0 beyond) or Removal::LabelMask
-// (labels 1 up to the cut, 2 beyond).
-vtkSmartPointer<vtkImageData> MaskBeyondCut(bool labels = false)
-{
-  auto mask = vtkSmartPointer<vtkImageData>::New();
-  mask->SetDimensions(N, N, N);
-  mask->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
-  auto* p = static_cast<unsigned char*>(mask->GetScalarPointer());
-  for (int k = 0; k < N; ++k)
-    for (int j = 0; j < N; ++j)
-      for (int i = 0; i < N; ++i)
-        *p++ = labels ? (i > kCut ? 2 : 1) : (i > kCut ? 0 : 255);
-  return mask;
-}
-
 std::vector<unsigned char> Render(vtkImageData* image, Removal removal, Mode mode)
 {
   vtkNew<vtkPiecewiseFunction> opacity;
@@ -127,23 +113,17 @@ std::vector<unsigned char> Render(vtkImageData* image, Removal removal, Mode mod
     plane->SetNormal(-1, 0, 0);
     mapper->AddClippingPlane(plane);
   }
-  const auto mask = MaskBeyondCut(removal == Removal::LabelMask);
+  // Binary: 255 up to the cut, 0 beyond; label map: label 1 (the volume's own functions)
+  // up to the cut, label 2 (zero opacity) beyond.
+  const auto mask = scatterer_testing::MakeMaskBeyond(N, kCut, removal == Removal::LabelMask);
   if (removal == Removal::Mask)
   {
     mapper->SetMaskInput(mask);
     mapper->SetMaskTypeToBinary();
   }
-  vtkNew<vtkPiecewiseFunction> transparent;
-  transparent->AddPoint(0, 0.0);
-  transparent->AddPoint(255, 0.0);
   if (removal == Removal::LabelMask)
   {
-    mapper->SetMaskInput(mask);
-    mapper->SetMaskTypeToLabelMap();
-    property->SetLabelColor(1, color);
-    property->SetLabelScalarOpacity(1, opacity);
-    property->SetLabelColor(2, color);
-    property->SetLabelScalarOpacity(2, transparent);
+    scatterer_testing::HideLabelTwo(mapper, property, mask, color, opacity);
   }
   vtkNew<vtkRenderer> renderer;
   scatterer_examples::AddVolume(renderer, mapper, property);

@@ -48,14 +48,6 @@ vtkSmartPointer<vtkImageData> Ball()
     });
 }
 
-// Half the grid (x > 23.5): removed by a binary mask (0), or label 2 of a label map.
-vtkSmartPointer<vtkImageData> HalfMask(bool labels)
-{
-  return scatterer_testing::MakeComponentVolume(N, 1,
-    [labels](int i, int, int, int) -> unsigned char
-    { return labels ? (i > 23.5 ? 2 : 1) : (i > 23.5 ? 0 : 255); });
-}
-
 enum class Scene
 {
   Plain,
@@ -104,9 +96,6 @@ std::vector<unsigned char> Render(Scene scene, int stride, std::string& features
   color->AddRGBPoint(0, 0.9, 0.8, 0.7);
   color->AddRGBPoint(200, 0.9, 0.8, 0.7);
   color->AddRGBPoint(255, 0.5, 0.7, 0.9);
-  vtkNew<vtkPiecewiseFunction> transparent;
-  transparent->AddPoint(0, 0.0);
-  transparent->AddPoint(255, 0.0);
   vtkNew<vtkVolumeProperty> property;
   property->SetScalarOpacity(opacity);
   property->SetColor(color);
@@ -119,7 +108,8 @@ std::vector<unsigned char> Render(Scene scene, int stride, std::string& features
   mapper->SetSampleDistance(0.25); // 4 samples span 1 voxel: half a texel at scale 2
   mapper->UseJitteringOff();
   mapper->SetMaximumLightReadStrideForTesting(stride);
-  const auto mask = HalfMask(scene == Scene::LabelMask);
+  // Half the grid (x > 23.5) removed by a binary mask, or label 2 of a label map.
+  const auto mask = scatterer_testing::MakeMaskBeyond(N, 23.5, scene == Scene::LabelMask);
   switch (scene)
   {
     case Scene::Cropping:
@@ -140,12 +130,7 @@ std::vector<unsigned char> Render(Scene scene, int stride, std::string& features
       mapper->SetMaskTypeToBinary();
       break;
     case Scene::LabelMask:
-      mapper->SetMaskInput(mask);
-      mapper->SetMaskTypeToLabelMap();
-      property->SetLabelColor(1, color);
-      property->SetLabelScalarOpacity(1, opacity);
-      property->SetLabelColor(2, color);
-      property->SetLabelScalarOpacity(2, transparent);
+      scatterer_testing::HideLabelTwo(mapper, property, mask, color, opacity);
       break;
     default:
       break;
