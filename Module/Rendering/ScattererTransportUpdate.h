@@ -102,6 +102,9 @@ public:
     return !this->Inputs.Lights.empty() && this->Inputs.Lights.front().Entering;
   }
 
+  /** For tests: false reads every kernel photon by photon (Inputs::GatherAtCentroid). */
+  void SetGatherAtCentroid(bool atCentroid) { this->Inputs.GatherAtCentroid = atCentroid; }
+
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:

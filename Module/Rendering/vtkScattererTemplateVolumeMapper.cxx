@@ -300,6 +300,12 @@ void vtkScattererTemplateVolumeMapper::SetMaximumLightReadStrideForTesting(int s
   this->Internals->MaximumLightStride = std::max(1, stride);
 }
 
+void vtkScattererTemplateVolumeMapper::SetGatherAtCentroidForTesting(bool atCentroid)
+{
+  this->Internals->Transport.SetGatherAtCentroid(atCentroid);
+  this->Modified();
+}
+
 void vtkScattererTemplateVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Internals->Transport.ReleaseGraphicsResources(window);

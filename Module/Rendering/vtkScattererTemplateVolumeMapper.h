@@ -445,6 +445,13 @@ public:
    */
   void SetMaximumLightReadStrideForTesting(int stride);
 
+  /**
+   * For tests: false gathers every material's in-scattering kernel photon by photon,
+   * also where it spreads little enough to be read at its centroid alone (the default,
+   * scatterer::readsAtCentroid).
+   */
+  void SetGatherAtCentroidForTesting(bool atCentroid);
+
 protected:
   vtkScattererTemplateVolumeMapper();
   ~vtkScattererTemplateVolumeMapper() override;

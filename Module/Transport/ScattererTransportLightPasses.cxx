@@ -323,6 +323,7 @@ void GatherLight(const TransportPass& pass, const SweepPlan& plan, vtkTextureObj
     vtkShaderProgram* program = UseProgram(pass.Window, quad);
     SetCommonUniforms(program, pass.Grid, in);
     SetMaterialUniforms(program, in);
+    SetKernelReadUniforms(program, pass.Grid, in);
     ScopedArrivingLight arriving(program, pass, plan);
     ScopedSampler fineGather(program, "st_fineGather", pass.Textures.FineGather);
     ScopedVolume volume(program, in);

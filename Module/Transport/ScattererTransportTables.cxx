@@ -1,9 +1,14 @@
 #include "ScattererTransportTables.h"
 
+#include "ScattererTransportGrid.h"
 #include "ScattererTransportTextures.h"
 
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
+
+#include <scatterer/Transport.h>
+
+#include <glm/mat3x3.hpp>
 
 #include <algorithm>
 #include <initializer_list>
@@ -31,12 +36,62 @@ void TransportTables::Upload(
   this->Materials->Create2DFromRaw(static_cast<unsigned int>(table.size() / materialRows),
     static_cast<unsigned int>(materialRows), 1, VTK_FLOAT, table.data());
 
+  // Row m: material m's photons, then their centroid (weight 1), which the gather reads
+  // alone where the kernel spreads little (SetKernelReadUniforms).
   const int materials = std::max<int>(1, static_cast<int>(in.MaterialColors.size() / 3));
   const int width = std::max(1, in.KernelWidth);
-  std::vector<float> kernel(in.Kernels);
-  kernel.resize(static_cast<size_t>(4 * width * materials), 0.0f);
+  std::vector<float> kernel(static_cast<size_t>(4 * (width + 1) * materials), 0.0f);
+  for (int m = 0; m < materials; ++m)
+  {
+    const std::vector<scatterer::KernelPhoton> photons = MaterialKernel(in, m);
+    float* row = kernel.data() + static_cast<size_t>(4 * (width + 1) * m);
+    for (size_t k = 0; k < photons.size(); ++k)
+    {
+      std::copy_n(&photons[k].offset.x, 3, row + 4 * k);
+      row[4 * k + 3] = photons[k].weight;
+    }
+    const glm::vec3 centroid = scatterer::kernelCentroid(photons);
+    std::copy_n(&centroid.x, 3, row + 4 * width);
+    row[4 * width + 3] = 1.0f;
+  }
   this->Kernel = NewTransportTexture(window, false, vtkTextureObject::ClampToEdge);
-  this->Kernel->Create2DFromRaw(width, materials, 4, VTK_FLOAT, kernel.data());
+  this->Kernel->Create2DFromRaw(width + 1, materials, 4, VTK_FLOAT, kernel.data());
+}
+
+std::vector<scatterer::KernelPhoton> MaterialKernel(
+  const vtkScattererTransportVolume::Inputs& in, int m)
+{
+  std::vector<scatterer::KernelPhoton> photons;
+  const size_t width = static_cast<size_t>(std::max(0, in.KernelWidth));
+  for (size_t k = 0; k < width; ++k)
+  {
+    const size_t i = 4 * (width * static_cast<size_t>(m) + k);
+    if (i + 3 < in.Kernels.size())
+    {
+      photons.push_back(
+        { glm::vec3(in.Kernels[i], in.Kernels[i + 1], in.Kernels[i + 2]), in.Kernels[i + 3] });
+    }
+  }
+  return photons;
+}
+
+void SetKernelReadUniforms(vtkShaderProgram* program, const TransportGrid& grid,
+  const vtkScattererTransportVolume::Inputs& in)
+{
+  glm::mat3 worldToGrid;
+  for (int i = 0; i < 9; ++i)
+  {
+    worldToGrid[i % 3][i / 3] = static_cast<float>(grid.WorldToGrid[i]); // row-major in
+  }
+  using scatterer_scene::kMaxMaterials;
+  int atCentroid[kMaxMaterials] = {};
+  const int materials = static_cast<int>(in.MaterialColors.size() / 3);
+  for (int m = 0; m < materials && m < kMaxMaterials; ++m)
+  {
+    atCentroid[m] =
+      in.GatherAtCentroid && scatterer::readsAtCentroid(MaterialKernel(in, m), worldToGrid) ? 1 : 0;
+  }
+  program->SetUniform1iv("st_atCentroid", kMaxMaterials, atCentroid);
 }
 
 void TransportTables::ReleaseGraphicsResources(vtkWindow* window)

@@ -28,6 +28,13 @@
 // A branch does not spare what it skips on every OpenGL: Mesa's llvmpipe runs both
 // sides of a branch for a whole SIMD group, so one program with the three cases cost
 // 344 ms per light change on the CT head (2 cores), the three variants 52 ms.
+//
+// A texel whose photons all stay in its material, of a material whose kernel spreads
+// at most scatterer::kCentroidReadSpread texels about its centroid c
+// (st_atCentroid[m], scatterer::readsAtCentroid), reads A once, at p + c: within
+// 3 s G of the photons' mean, G the largest change of A between neighbouring texels
+// (the bound is in scatterer/Transport.h). Its loop runs over the centroid alone, the
+// kernel's last column; a loop ends for a SIMD group when none of its texels goes on.
 //============================================================================
 //VTK::Transport::Common
 //VTK::Transport::Materials
@@ -36,6 +43,7 @@
 //VTK::Transport::StoredGather
 in vec2 texCoord;
 uniform sampler3D st_fineGather;   // pass 0a: -1 (none), m, or m + ST_MIXED (st_storedGather)
+uniform int st_atCentroid[ST_MAX_MATERIALS]; // 1: material m's kernel is read at its centroid
 flat in float st_layer;          // this layer (scatterer_transport_layers_gs.glsl)
 
 void main()
@@ -54,7 +62,9 @@ void main()
     int m = int(gather + 0.5) - (mixed ? ST_MIXED : 0);
     vec3 sum = vec3(0.0);
     float weights = 0.0;
-    for (int k = 0; k < st_kernelCount; ++k)
+    bool atCentroid = !mixed && st_atCentroid[m] != 0;
+    int end = st_kernelCount + (atCentroid ? 1 : 0);
+    for (int k = atCentroid ? st_kernelCount : 0; k < end; ++k)
     {
       vec4 photon = st_photon(m, k);
       vec3 offset = photon.xyz;

@@ -12,7 +12,9 @@
 #define ST_GATHER_ARRIVING 0
 #define ST_GATHER_TEMPLATES 1
 #define ST_GATHER_ACROSS_MATERIALS 2
-uniform sampler2D st_kernel;       // row m: (offset in world units, weight), st_kernelCount wide
+// Row m: material m's photons (offset in world units, weight), st_kernelCount of them,
+// then the kernel's centroid (offset, weight 1).
+uniform sampler2D st_kernel;
 uniform int st_kernelCount;
 uniform mat3 st_worldToGrid;
 uniform int st_materialCount;

@@ -178,6 +178,9 @@ public:
     int KernelWidth = 0;
     bool Bleed = true;
     bool Boundary = true;
+    /// A texel inside its material reads a kernel that spreads little at its centroid
+    /// alone (scatterer::readsAtCentroid); false (tests only): photon by photon.
+    bool GatherAtCentroid = true;
     float MultipleScattering = 1; ///< strength of the multiple-scattering term (0: none)
     int DiffusionIterations = 8;  ///< Jacobi iterations of the diffusion solve
 

@@ -27,6 +27,8 @@
 
 #include <gtest/gtest.h>
 
+#include <scatterer/Transport.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -909,6 +911,58 @@ TEST(TransportVolume, PhotonsPastTheGridSeeTheLightUnattenuated)
   EXPECT_GT(edge, middle * 1.05f) << "photons past the grid read the edge's shadow";
   EXPECT_NEAR(at(two, 0, 12, 10), 2.0f * edge, 0.01f * edge)
     << "the lights summed by pass 2a read the edge's shadow past the grid";
+}
+
+TEST(TransportVolume, KernelReadAtItsCentroidStaysWithinItsBoundOfThePhotons)
+{
+  // A texel inside its material whose kernel spreads at most kCentroidReadSpread texels
+  // reads the arriving light A once, at the kernel's centroid, within 3 s G of the
+  // photons' mean (scatterer/Transport.h; G the largest change of A between neighbouring
+  // texels). The ball over the plate of SphereShadowFallsWhereGeometryPutsIt, with voxels
+  // of 0.5 world units (so that a world offset read as texels would be off twice), its
+  // shadow's edge the sharpest change of A there is. One directional light of intensity
+  // 1: A is its transmittance. The light read both ways differs only in its single
+  // scattering (the same diffusion and ambient light are added to both).
+  const int n = 48;
+  auto image = MakeVolume(n, 0.5,
+    [](int i, int j, int k) -> unsigned char
+    {
+      const double r2 = (i - 24.0) * (i - 24.0) + (j - 24.0) * (j - 24.0) + (k - 36.0) * (k - 36.0);
+      return (r2 <= 25.0 || (k >= 4 && k <= 6)) ? 200 : 0;
+    });
+  TransportScene scene(image, 0.95);
+  scene.SetDirectional(0.25, 0, 1.0);
+  const auto transmittance = scene.Transmittance();
+  const auto centroid = scene.ReceivedLight();
+  scene.Mapper->SetGatherAtCentroidForTesting(false);
+  const auto photons = scene.ReceivedLight();
+  ASSERT_EQ(transmittance.size(), static_cast<size_t>(n * n * n));
+  ASSERT_EQ(centroid.size(), 3 * transmittance.size());
+  ASSERT_EQ(photons.size(), centroid.size());
+  float G = 0.0f;
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i + 1 < n; ++i)
+        G = std::max(
+          { G, std::abs(scene.At(transmittance, i + 1, j, k) - scene.At(transmittance, i, j, k)),
+            std::abs(scene.At(transmittance, j, i + 1, k) - scene.At(transmittance, j, i, k)),
+            std::abs(scene.At(transmittance, j, k, i + 1) - scene.At(transmittance, j, k, i)) });
+  const double bound = 3.0 * scatterer::kCentroidReadSpread * G;
+  double worst = 0.0, sum = 0.0;
+  size_t differing = 0;
+  for (size_t v = 0; v < centroid.size(); ++v)
+  {
+    const double d = std::abs(static_cast<double>(centroid[v]) - photons[v]);
+    worst = std::max(worst, d);
+    sum += d;
+    differing += d > 0.0 ? 1 : 0;
+  }
+  std::printf("centroid read against photon by photon: worst %g (bound 3 s G = %g, G = %g), "
+              "mean %g, %zu of %zu values differ\n",
+    worst, bound, G, sum / centroid.size(), differing, centroid.size());
+  EXPECT_GT(G, 0.9f) << "the shadow's edge is not sharp: the bound is not put to the test";
+  EXPECT_GT(differing, 0u) << "no texel was read at its centroid";
+  EXPECT_LE(worst, bound + 1e-3) << "the centroid read strays from the photons' mean";
 }
 
 TEST(TransportVolume, ThickTexelHoldsTheMeanOfTheLightEnteringAndLeavingIt)

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace scatterer {
@@ -62,6 +63,40 @@ std::vector<KernelPhoton> mergedKernel(
     }
   }
   return all;
+}
+
+glm::vec3 kernelCentroid(const std::vector<KernelPhoton>& kernel)
+{
+  glm::dvec3 sum(0.0);
+  double weights = 0.0;
+  for (const auto& p : kernel) {
+    sum += glm::dvec3(p.offset) * static_cast<double>(p.weight);
+    weights += p.weight;
+  }
+  return weights > 0.0 ? glm::vec3(sum / weights) : glm::vec3(0.0f);
+}
+
+double kernelSpread(const std::vector<KernelPhoton>& kernel, const glm::mat3& worldToGrid)
+{
+  const glm::vec3 c = kernelCentroid(kernel);
+  double spread = 0.0;
+  for (const auto& p : kernel) {
+    if (p.weight > 0.0f) {
+      const glm::vec3 d = worldToGrid * (p.offset - c);
+      if (!std::isfinite(d.x) || !std::isfinite(d.y) || !std::isfinite(d.z)) {
+        return std::numeric_limits<double>::infinity(); // a degenerate grid: no bound
+      }
+      spread = std::max({ spread, static_cast<double>(std::abs(d.x)),
+        static_cast<double>(std::abs(d.y)), static_cast<double>(std::abs(d.z)) });
+    }
+  }
+  return spread;
+}
+
+bool readsAtCentroid(const std::vector<KernelPhoton>& kernel, const glm::mat3& worldToGrid)
+{
+  // A degenerate grid spreads infinitely: gathered photon by photon.
+  return kernelSpread(kernel, worldToGrid) <= kCentroidReadSpread;
 }
 
 } // namespace scatterer

@@ -7,6 +7,7 @@
 #include <scatterer/Material.h>
 #include <scatterer/Template.h>
 
+#include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 
 #include <vector>
@@ -45,5 +46,33 @@ double kernelRadius(const Material& material, double sigmaT, double minRadius, d
 // non-positive radius.
 std::vector<KernelPhoton> mergedKernel(
   const std::vector<Template>& templates, int cap, double radius);
+
+// The kernel's centroid c = sum_j w_j r_j / sum_j w_j (world units); zero for a kernel
+// without weight.
+glm::vec3 kernelCentroid(const std::vector<KernelPhoton>& kernel);
+
+// How far the kernel's photons spread about its centroid c on the transport grid:
+// the largest |worldToGrid (r_j - c)| along any grid axis, in grid texels (0 for a
+// kernel without weight; infinite for a non-finite worldToGrid). worldToGrid maps a
+// world vector to grid texels.
+double kernelSpread(const std::vector<KernelPhoton>& kernel, const glm::mat3& worldToGrid);
+
+// Reading a kernel at its centroid alone. The gather takes
+//   R(p) = sum_j w_j A(p + r_j) / sum_j w_j
+// of the stored light A, which is trilinear between texel centres: linear along each
+// axis between them, with a slope of at most G there (G: the largest change of A
+// between neighbouring texels). A linear field's weighted mean is its value at the
+// centroid, A(p + c), exactly; A's slope changes only at texel centres (p itself is
+// one), so with every photon within s texels of c along each axis
+//   |R(p) - A(p + c)| <= 3 s G.
+// The templates' brightest photons lie within a few hundredths of a template radius of
+// their centre, and a template radius is one mean free path of the real medium or
+// less (kernelRadius): on the CT head both materials' kernels spread under 1/20 of a
+// transport texel (docs/model.md, step 2). Up to this spread a texel inside its
+// material reads A once, at p + c, instead of once per photon (the gather's cost:
+// docs/rendering.md); photons that may land in another material (colour bleeding, the
+// boundary rescale) are always gathered one by one.
+inline constexpr double kCentroidReadSpread = 1.0 / 16.0;
+bool readsAtCentroid(const std::vector<KernelPhoton>& kernel, const glm::mat3& worldToGrid);
 
 } // namespace scatterer
