@@ -105,6 +105,9 @@ public:
   /** For tests: false reads every kernel photon by photon (Inputs::GatherAtCentroid). */
   void SetGatherAtCentroid(bool atCentroid) { this->Inputs.GatherAtCentroid = atCentroid; }
 
+  /** For tests: false diffuses on every coarse texel (Inputs::DiffuseOnTiles). */
+  void SetDiffuseOnTiles(bool onTiles) { this->Inputs.DiffuseOnTiles = onTiles; }
+
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:

@@ -306,6 +306,12 @@ void vtkScattererTemplateVolumeMapper::SetGatherAtCentroidForTesting(bool atCent
   this->Modified();
 }
 
+void vtkScattererTemplateVolumeMapper::SetDiffuseOnTilesForTesting(bool onTiles)
+{
+  this->Internals->Transport.SetDiffuseOnTiles(onTiles);
+  this->Modified();
+}
+
 void vtkScattererTemplateVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Internals->Transport.ReleaseGraphicsResources(window);

@@ -452,6 +452,12 @@ public:
    */
   void SetGatherAtCentroidForTesting(bool atCentroid);
 
+  /**
+   * For tests: false draws the multiple-scattering solve on every texel of its coarse
+   * grid, not only on the tiles that hold a medium (the default; the same light).
+   */
+  void SetDiffuseOnTilesForTesting(bool onTiles);
+
 protected:
   vtkScattererTemplateVolumeMapper();
   ~vtkScattererTemplateVolumeMapper() override;

@@ -7,6 +7,7 @@
 #include "ScattererTransportPrograms.h"
 #include "ScattererTransportProgress.h"
 #include "ScattererTransportTextures.h"
+#include "ScattererTransportTiles.h"
 
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -22,7 +23,8 @@ namespace scatterer_gpu
 namespace
 {
 // Pass 3a: the multiple-scattering source on the coarse grid (mean light scattered
-// once), from the fine scattering coefficient of pass 0a and the lights' arriving light.
+// once), from the fine scattering coefficient of pass 0a and the lights' arriving light;
+// on the tiles that hold a medium, the only texels whose source the diffusion reads.
 void DrawSource(const TransportPass& pass, const SweepPlan& plan, const CoarseGrid& coarse,
   const CoarseUniforms& u)
 {
@@ -33,15 +35,15 @@ void DrawSource(const TransportPass& pass, const SweepPlan& plan, const CoarseGr
   program->SetUniformi("st_block", coarse.Block);
   ScopedSampler fineScattering(program, "st_fineScattering", pass.Textures.FineScattering);
   ScopedArrivingLight arriving(program, pass, plan);
-  DrawLayers(pass.Framebuffer, pass.Programs.Source.get(), program, { pass.Textures.CoarseSource },
-    coarse.Dims[2]);
+  DrawTiles(pass.Framebuffer, pass.Programs.Source.get(), program, { pass.Textures.CoarseSource },
+    pass.Textures.Tiles);
   pass.Progress.StepDone();
 }
 
 // Pass 3b: Jacobi iterations of the diffusion equation, ping-pong between the two fluence
-// grids. Returns the grid holding the last iteration's phi.
-vtkTextureObject* Diffuse(
-  const TransportPass& pass, const CoarseGrid& coarse, const CoarseUniforms& u, int iterations)
+// grids, on the tiles that hold a medium (the texels left out stay 0). Returns the grid
+// holding the last iteration's phi.
+vtkTextureObject* Diffuse(const TransportPass& pass, const CoarseUniforms& u, int iterations)
 {
   TransportTextures& textures = pass.Textures;
   vtkShaderProgram* program = UseProgram(pass.Window, pass.Programs.Diffuse.get());
@@ -55,8 +57,8 @@ vtkTextureObject* Diffuse(
     {
       ScopedSampler previous(program, "st_previous", textures.Fluence[1 - current]);
       program->SetUniformi("st_first", i == 0 ? 1 : 0);
-      DrawLayers(pass.Framebuffer, pass.Programs.Diffuse.get(), program,
-        { textures.Fluence[current] }, coarse.Dims[2]);
+      DrawTiles(pass.Framebuffer, pass.Programs.Diffuse.get(), program,
+        { textures.Fluence[current] }, textures.Tiles);
     }
     current = 1 - current;
     pass.Progress.StepDone();
@@ -85,7 +87,7 @@ bool SolveMultipleScattering(
   state->vtkglDisable(GL_BLEND);
   state->vtkglViewport(0, 0, coarse.Dims[0], coarse.Dims[1]);
   DrawSource(pass, plan, coarse, uniforms);
-  fluence = Diffuse(pass, coarse, uniforms, DiffusionIterations(pass.In));
+  fluence = Diffuse(pass, uniforms, DiffusionIterations(pass.In));
   return true;
 }
 

@@ -29,7 +29,9 @@ int DiffusionIterations(const vtkScattererTransportVolume::Inputs& inputs);
  *   the mean over a block of fine texels;
  * - pass 3b (scatterer_transport_diffuse.glsl), DiffusionIterations() Jacobi iterations of
  *     -div(D grad phi) + sigma_a phi = S,   D = 1 / (3 sigma_t),  sigma_a = sigma_t (1 - albedo)
- * and sets @p fluence to the coarse texture that holds phi, for ScopedScatteredLight.
+ * both drawn only on the tiles of the coarse grid that hold a medium (TransportTextures::Tiles,
+ * ScattererTransportTiles.h), and sets @p fluence to the coarse texture that holds phi, for
+ * ScopedScatteredLight.
  * False with @p why set if the coarse textures cannot be allocated.
  */
 bool SolveMultipleScattering(

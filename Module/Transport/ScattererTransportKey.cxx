@@ -67,6 +67,7 @@ std::uint64_t MediumKey(const vtkScattererTransportVolume::Inputs& in)
   f.Add(in.Bleed);
   f.Add(in.Boundary);
   f.Add(in.GatherAtCentroid);
+  f.Add(in.DiffuseOnTiles);
   f.Add(in.TablesVersion);
   f.Add(in.TexToWorld, 16);
   f.Add(in.TexToDataset, 16);

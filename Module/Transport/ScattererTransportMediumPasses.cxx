@@ -128,6 +128,8 @@ bool BuildMediumTextures(const TransportPass& pass, std::string& why)
   DrawFineMedium(pass, coarse);
   pass.Textures.LayerGathers = CountLayerGathers(pass);
   DrawCoarseMedium(pass, coarse);
+  pass.Textures.Tiles.Update(pass.Window, pass.Framebuffer, pass.Textures.CoarseMedium,
+    { pass.Textures.Fluence[0], pass.Textures.Fluence[1] }, pass.In.DiffuseOnTiles);
   pass.Progress.StepDone();
   return true;
 }

@@ -33,6 +33,7 @@
 #include "scatterer_transport_stored_gather.h"
 #include "scatterer_transport_sweep.h"
 #include "scatterer_transport_sweep_common.h"
+#include "scatterer_transport_tiles_vs.h"
 
 #include <algorithm>
 #include <initializer_list>
@@ -111,8 +112,14 @@ bool TransportPrograms::Create(
       scatterer_transport_gather, variant + "#define ST_GATHER " + std::to_string(g) + "\n"));
   }
   this->Count = quad(WithCommon(scatterer_transport_count, variant));
-  this->Source = quad(WithCommon(scatterer_transport_source, variant));
-  this->Diffuse = quad(scatterer_transport_diffuse);
+  // The diffusion's passes draw the coarse texels that hold a medium (ScattererTransportTiles.h).
+  auto tiles = [&](const std::string& fs)
+  {
+    return std::unique_ptr<vtkOpenGLQuadHelper>(new vtkOpenGLQuadHelper(
+      window, scatterer_transport_tiles_vs, fs.c_str(), scatterer_transport_layers_gs));
+  };
+  this->Source = tiles(WithCommon(scatterer_transport_source, variant));
+  this->Diffuse = tiles(scatterer_transport_diffuse);
   for (auto* q : this->All())
   {
     if (!(*q)->Program)

@@ -221,7 +221,7 @@ bool TransportTextures::AllocateCoarse(
 
 size_t TransportTextures::GetGPUBytes() const
 {
-  constexpr size_t rgba16f = 8, r11g11b10f = 4, r16f = 2, r8 = 1;
+  constexpr size_t rgba32f = 16, rgba16f = 8, r11g11b10f = 4, r16f = 2, r8 = 1;
   return r11g11b10f * Texels(this->FineScattering) + r8 * Texels(this->FineGather) +
     rgba16f *
     (Texels(this->Light) + Texels(this->Arriving) + Texels(this->Fluence[0]) +
@@ -229,7 +229,8 @@ size_t TransportTextures::GetGPUBytes() const
     r16f *
     (Texels(this->Transmittance) + Texels(this->Slices[0]) + Texels(this->Slices[1]) +
       2 * Texels(this->Lines) + 4 * (Texels(this->LineEnds[0]) + Texels(this->LineEnds[1])) +
-      Texels(this->CoarseOcclusion));
+      Texels(this->CoarseOcclusion)) +
+    rgba32f * Texels(this->Tiles.Rects);
 }
 
 void TransportTextures::ReleaseGraphicsResources(vtkWindow* window)
@@ -245,5 +246,6 @@ void TransportTextures::ReleaseGraphicsResources(vtkWindow* window)
       *t = nullptr;
     }
   }
+  this->Tiles.ReleaseGraphicsResources(window);
 }
 }

@@ -4,6 +4,7 @@
 #ifndef ScattererTransportTextures_h
 #define ScattererTransportTextures_h
 
+#include "ScattererTransportTiles.h" // for CoarseTiles
 #include "vtkSmartPointer.h"
 
 #include <cstddef> // for size_t
@@ -50,6 +51,8 @@ struct TransportTextures
   vtkSmartPointer<vtkTextureObject> CoarseMedium;    ///< RGBA16F, coarse grid: albedo, sigma_t
   vtkSmartPointer<vtkTextureObject> CoarseSource;    ///< RGBA16F, coarse grid: light scattered once
   vtkSmartPointer<vtkTextureObject> CoarseOcclusion; ///< R16F, coarse grid: ambient occlusion
+  /// The coarse texels the diffusion draws: those of CoarseMedium that hold a medium
+  CoarseTiles Tiles;
 
   /// Counts the allocations of FineScattering, FineGather, CoarseMedium and CoarseOcclusion: what
   /// the medium passes drew is gone when it changes.

@@ -181,6 +181,9 @@ public:
     /// A texel inside its material reads a kernel that spreads little at its centroid
     /// alone (scatterer::readsAtCentroid); false (tests only): photon by photon.
     bool GatherAtCentroid = true;
+    /// The diffusion draws only the coarse texels that hold a medium
+    /// (ScattererTransportTiles.h); false (tests only): every coarse texel.
+    bool DiffuseOnTiles = true;
     float MultipleScattering = 1; ///< strength of the multiple-scattering term (0: none)
     int DiffusionIterations = 8;  ///< Jacobi iterations of the diffusion solve
 

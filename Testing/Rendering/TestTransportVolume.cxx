@@ -6,6 +6,7 @@
 #include "ScattererErrorObserver.h"
 #include "ScattererRenderHarness.h"
 #include "ScattererTestVolumes.h"
+#include "ScattererTransportTiles.h"
 
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
@@ -33,6 +34,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -150,6 +152,16 @@ struct TransportScene
 Filler Slab(int zLo, int zHi)
 {
   return [=](int, int, int k) -> unsigned char { return k >= zLo && k <= zHi ? 200 : 0; };
+}
+
+// A ball of radius 5 voxels at (24, 24, 36) over a plate z in [4, 6] (for a 48^3 volume).
+Filler BallOverPlate()
+{
+  return [](int i, int j, int k) -> unsigned char
+  {
+    const double r2 = (i - 24.0) * (i - 24.0) + (j - 24.0) * (j - 24.0) + (k - 36.0) * (k - 36.0);
+    return (r2 <= 25.0 || (k >= 4 && k <= 6)) ? 200 : 0;
+  };
 }
 
 // The slab z in [zLo, zHi] of an n^3 volume of voxels `spacing` wide, opacity `alpha`
@@ -382,12 +394,7 @@ TEST(TransportVolume, SphereShadowFallsWhereGeometryPutsIt)
   // toward (0.25, 0, 1): at z = 7 the ball's shadow is centred at x = 24 - 0.25 (36 - 7)
   // = 16.75, an ellipse of half-width 5 / cos(14 deg) = 5.2 along x and 5 along y.
   const int n = 48;
-  auto image = MakeVolume(n, 1.0,
-    [](int i, int j, int k) -> unsigned char
-    {
-      const double r2 = (i - 24.0) * (i - 24.0) + (j - 24.0) * (j - 24.0) + (k - 36.0) * (k - 36.0);
-      return (r2 <= 25.0 || (k >= 4 && k <= 6)) ? 200 : 0;
-    });
+  auto image = MakeVolume(n, 1.0, BallOverPlate());
   TransportScene scene(image, 0.95);
   scene.SetDirectional(0.25, 0, 1.0);
   const auto t = scene.Transmittance();
@@ -924,12 +931,7 @@ TEST(TransportVolume, KernelReadAtItsCentroidStaysWithinItsBoundOfThePhotons)
   // 1: A is its transmittance. The light read both ways differs only in its single
   // scattering (the same diffusion and ambient light are added to both).
   const int n = 48;
-  auto image = MakeVolume(n, 0.5,
-    [](int i, int j, int k) -> unsigned char
-    {
-      const double r2 = (i - 24.0) * (i - 24.0) + (j - 24.0) * (j - 24.0) + (k - 36.0) * (k - 36.0);
-      return (r2 <= 25.0 || (k >= 4 && k <= 6)) ? 200 : 0;
-    });
+  auto image = MakeVolume(n, 0.5, BallOverPlate());
   TransportScene scene(image, 0.95);
   scene.SetDirectional(0.25, 0, 1.0);
   const auto transmittance = scene.Transmittance();
@@ -963,6 +965,139 @@ TEST(TransportVolume, KernelReadAtItsCentroidStaysWithinItsBoundOfThePhotons)
   EXPECT_GT(G, 0.9f) << "the shadow's edge is not sharp: the bound is not put to the test";
   EXPECT_GT(differing, 0u) << "no texel was read at its centroid";
   EXPECT_LE(worst, bound + 1e-3) << "the centroid read strays from the photons' mean";
+}
+
+TEST(TransportTiles, RectanglesCoverWhatHoldsAMediumAndOnlyItsTiles)
+{
+  // Random grids whose sides are not multiples of the tile: every texel that holds a
+  // medium is covered exactly once, every tile a rectangle covers holds one, and runs
+  // of the same columns in consecutive rows of tiles are one rectangle.
+  std::mt19937 random(11);
+  const int dims[3] = { 23, 18, 5 }, tile = scatterer_gpu::kCoarseTile;
+  size_t rectangles = 0, runs = 0;
+  for (int trial = 0; trial < 20; ++trial)
+  {
+    const double fill = 0.02 * (trial + 1);
+    std::vector<char> held(static_cast<size_t>(dims[0] * dims[1] * dims[2]));
+    std::bernoulli_distribution draw(fill);
+    for (auto& h : held)
+    {
+      h = draw(random) ? 1 : 0;
+    }
+    const auto at = [&](int x, int y, int z)
+    { return held[static_cast<size_t>(x + dims[0] * (y + dims[1] * z))] != 0; };
+    const auto rects = scatterer_gpu::CoverTexels(dims, tile, at);
+    std::vector<int> covered(held.size(), 0);
+    for (const auto& r : rects)
+    {
+      ASSERT_TRUE(r.X0 < r.X1 && r.Y0 < r.Y1 && r.X0 >= 0 && r.Y0 >= 0 && r.X1 <= dims[0] &&
+        r.Y1 <= dims[1] && r.Z >= 0 && r.Z < dims[2]);
+      // Whole tiles: the edges on the tiles' or the grid's.
+      EXPECT_TRUE(r.X0 % tile == 0 && r.Y0 % tile == 0 && (r.X1 % tile == 0 || r.X1 == dims[0]) &&
+        (r.Y1 % tile == 0 || r.Y1 == dims[1]))
+        << "a rectangle cuts a tile, layer " << r.Z;
+      for (int y = r.Y0; y < r.Y1; ++y)
+      {
+        for (int x = r.X0; x < r.X1; ++x)
+        {
+          ++covered[static_cast<size_t>(x + dims[0] * (y + dims[1] * r.Z))];
+        }
+      }
+      for (int ty = r.Y0; ty < r.Y1; ty += tile)
+      {
+        for (int tx = r.X0; tx < r.X1; tx += tile)
+        {
+          bool any = false;
+          for (int y = ty; y < std::min(ty + tile, r.Y1); ++y)
+          {
+            for (int x = tx; x < std::min(tx + tile, r.X1); ++x)
+            {
+              any = any || at(x, y, r.Z);
+            }
+          }
+          EXPECT_TRUE(any) << "a tile without a medium is drawn, layer " << r.Z;
+        }
+      }
+    }
+    for (size_t i = 0; i < held.size(); ++i)
+    {
+      EXPECT_LE(covered[i], 1) << "texel " << i << " drawn twice";
+      if (held[i])
+      {
+        EXPECT_EQ(covered[i], 1) << "texel " << i << " holds a medium and is not drawn";
+      }
+    }
+    // The runs of tiles per layer and row, counted here: the rectangles merge some.
+    for (int z = 0; z < dims[2]; ++z)
+    {
+      for (int ty = 0; ty * tile < dims[1]; ++ty)
+      {
+        bool before = false;
+        for (int tx = 0; tx * tile < dims[0]; ++tx)
+        {
+          bool any = false;
+          for (int y = ty * tile; y < std::min((ty + 1) * tile, dims[1]); ++y)
+          {
+            for (int x = tx * tile; x < std::min((tx + 1) * tile, dims[0]); ++x)
+            {
+              any = any || at(x, y, z);
+            }
+          }
+          runs += any && !before ? 1 : 0;
+          before = any;
+        }
+      }
+    }
+    rectangles += rects.size();
+  }
+  std::printf("tiles: %zu rectangles for %zu runs of tiles\n", rectangles, runs);
+  EXPECT_LT(rectangles, runs) << "no run extends the one below it";
+  const auto all = scatterer_gpu::CoverTexels(dims, tile, [](int, int, int) { return true; });
+  ASSERT_EQ(all.size(), static_cast<size_t>(dims[2])) << "a full layer is one rectangle";
+  EXPECT_TRUE(all[0].X0 == 0 && all[0].Y0 == 0 && all[0].X1 == dims[0] && all[0].Y1 == dims[1]);
+}
+
+TEST(TransportVolume, DiffusionOnTilesIsTheSolveOnEveryTexel)
+{
+  // The diffusion draws only the coarse tiles that hold a medium; the texels it leaves
+  // out read 0, what the solve writes where there is no medium. The ball over the plate
+  // of SphereShadowFallsWhereGeometryPutsIt, most of its grid empty: the light received
+  // is the same, texel for texel, and the multiple scattering is a visible part of it.
+  const int n = 48;
+  auto image = MakeVolume(n, 1.0, BallOverPlate());
+  TransportScene scene(image, 0.3);
+  scene.SetDirectional(0.25, 0, 1.0);
+  // First a medium in every texel, so that the solve fills the whole coarse grid; then,
+  // in the same transport volume, the ball and the plate: what the tiles leave out must
+  // read 0 again, not the light of the build before.
+  vtkPiecewiseFunction* opacity = scene.Property->GetScalarOpacity();
+  opacity->AddPoint(0, 0.05);
+  opacity->AddPoint(100, 0.05);
+  const auto tiled = scene.RenderAndRead(
+    [&](vtkScattererTransportVolume* transport, vtkOpenGLRenderWindow* gl)
+    {
+      opacity->AddPoint(0, 0.0);
+      opacity->AddPoint(100, 0.0);
+      gl->Render();
+      return transport->ReadLight(gl);
+    });
+  scene.Mapper->SetDiffuseOnTilesForTesting(false);
+  const auto everywhere = scene.ReceivedLight();
+  scene.Mapper->SetMultipleScattering(0.0);
+  const auto single = scene.ReceivedLight();
+  ASSERT_EQ(tiled.size(), static_cast<size_t>(3 * n * n * n));
+  ASSERT_EQ(everywhere.size(), tiled.size());
+  ASSERT_EQ(single.size(), tiled.size());
+  double worst = 0.0, diffused = 0.0;
+  for (size_t v = 0; v < tiled.size(); ++v)
+  {
+    worst = std::max(worst, static_cast<double>(std::abs(tiled[v] - everywhere[v])));
+    diffused = std::max(diffused, static_cast<double>(std::abs(everywhere[v] - single[v])));
+  }
+  std::printf("diffusion on tiles against every texel: worst %g; the diffused light up to %g\n",
+    worst, diffused);
+  EXPECT_GT(diffused, 0.01) << "the scene shows no multiple scattering: nothing is compared";
+  EXPECT_EQ(worst, 0.0) << "the tiles change the multiple scattering";
 }
 
 TEST(TransportVolume, ThickTexelHoldsTheMeanOfTheLightEnteringAndLeavingIt)

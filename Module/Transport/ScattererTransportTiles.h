@@ -1,0 +1,74 @@
+// The diffusion's coarse texels that hold a medium, covered by rectangles of whole tiles
+// per layer, so that the diffusion's passes draw those and no others.
+//
+// Why: on the CT head about three quarters of the coarse grid hold no medium (air around
+// the head and inside the skull). Those texels' fluence is 0 whatever the iteration, and their
+// source is read by no one, but llvmpipe runs a fragment whether it returns early or is
+// discarded (docs/rendering.md, "what a Jacobi iteration costs"); only not drawing it
+// spares it. The texels left out keep the 0 they are cleared to, which is what the
+// Jacobi pass writes where there is no medium, so the solve is the same, texel for texel.
+#ifndef ScattererTransportTiles_h
+#define ScattererTransportTiles_h
+
+#include "vtkSmartPointer.h"
+
+#include <functional>
+#include <initializer_list>
+#include <vector>
+
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
+class vtkTextureObject;
+class vtkWindow;
+
+namespace scatterer_gpu
+{
+/** Texels [X0, X1) x [Y0, Y1) of layer Z. */
+struct TexelRect
+{
+  int X0, Y0, X1, Y1, Z;
+};
+
+/** Side of a tile, in coarse texels. llvmpipe rasterises blocks of 4x4 pixels; smaller
+ * tiles leave out more texels but cost more rectangles. */
+constexpr int kCoarseTile = 4;
+
+/**
+ * Rectangles covering every texel (x, y, z) of a grid of @p dims for which @p has holds
+ * and no tile of @p tile x @p tile texels (per layer) without one: per layer and row of
+ * tiles, each run of consecutive tiles holding such a texel is one rectangle, and a run
+ * with the same columns as the one below it in the layer extends it.
+ */
+std::vector<TexelRect> CoverTexels(
+  const int dims[3], int tile, const std::function<bool(int, int, int)>& has);
+
+/** The rectangles of the coarse grid the diffusion draws, on the GPU. */
+struct CoarseTiles
+{
+  /// RGBA32F, 2 texels a rectangle (x0, y0, x1, y1) and (z, 0, 0, 0), kRowRects
+  /// rectangles a row (scatterer_transport_tiles_vs.glsl)
+  vtkSmartPointer<vtkTextureObject> Rects;
+  int Count = 0;
+  static constexpr int kRowRects = 512;
+
+  /** The rectangles around the texels of @p coarseMedium (RGBA: albedo, sigma_t) whose
+   * sigma_t is not 0 (@p onTiles; else whole layers), uploaded; and @p fluence cleared
+   * to 0 (what is left out is read as such). */
+  void Update(vtkOpenGLRenderWindow* window, vtkOpenGLFramebufferObject* framebuffer,
+    vtkTextureObject* coarseMedium, std::initializer_list<vtkTextureObject*> fluence,
+    bool onTiles);
+
+  void ReleaseGraphicsResources(vtkWindow* window);
+};
+
+/** Draws @p quad (a program with scatterer_transport_tiles_vs.glsl and the layered
+ * geometry shader) over the rectangles of @p tiles into the 3D @p targets (attached
+ * layered in order) in one draw call. Detaches them after. */
+void DrawTiles(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLQuadHelper* quad,
+  vtkShaderProgram* program, std::initializer_list<vtkTextureObject*> targets,
+  const CoarseTiles& tiles);
+}
+
+#endif
