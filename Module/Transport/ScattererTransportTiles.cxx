@@ -80,8 +80,7 @@ std::vector<TexelRect> CoverTexels(
 }
 
 void CoarseTiles::Update(vtkOpenGLRenderWindow* window, vtkOpenGLFramebufferObject* framebuffer,
-  vtkTextureObject* coarseMedium, std::initializer_list<vtkTextureObject*> fluence,
-  bool onTiles)
+  vtkTextureObject* coarseMedium, std::initializer_list<vtkTextureObject*> fluence, bool onTiles)
 {
   const int dims[3] = { static_cast<int>(coarseMedium->GetWidth()),
     static_cast<int>(coarseMedium->GetHeight()), static_cast<int>(coarseMedium->GetDepth()) };

@@ -57,8 +57,7 @@ struct CoarseTiles
    * sigma_t is not 0 (@p onTiles; else whole layers), uploaded; and @p fluence cleared
    * to 0 (what is left out is read as such). */
   void Update(vtkOpenGLRenderWindow* window, vtkOpenGLFramebufferObject* framebuffer,
-    vtkTextureObject* coarseMedium, std::initializer_list<vtkTextureObject*> fluence,
-    bool onTiles);
+    vtkTextureObject* coarseMedium, std::initializer_list<vtkTextureObject*> fluence, bool onTiles);
 
   void ReleaseGraphicsResources(vtkWindow* window);
 };
