@@ -55,6 +55,17 @@ void DrawInstances(vtkOpenGLQuadHelper* quad, vtkShaderProgram* program, int fir
   quad->VAO->Release();
 }
 
+void AttachLayeredTargets(
+  vtkOpenGLFramebufferObject* framebuffer, std::initializer_list<vtkTextureObject*> targets)
+{
+  unsigned int index = 0;
+  for (vtkTextureObject* target : targets)
+  {
+    AttachLayered(index++, target);
+  }
+  framebuffer->ActivateDrawBuffers(index);
+}
+
 void Attach2D(unsigned int index, vtkTextureObject* texture)
 {
   glFramebufferTexture2D(
@@ -81,12 +92,7 @@ void DrawLayersWhere(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLQuadHelpe
   vtkShaderProgram* program, std::initializer_list<vtkTextureObject*> targets, int layers,
   const std::function<bool(int)>& draw)
 {
-  unsigned int index = 0;
-  for (vtkTextureObject* target : targets)
-  {
-    AttachLayered(index++, target);
-  }
-  framebuffer->ActivateDrawBuffers(index);
+  AttachLayeredTargets(framebuffer, targets);
   for (int z = 0; z < layers;)
   {
     if (!draw(z))

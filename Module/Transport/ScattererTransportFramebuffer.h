@@ -45,6 +45,11 @@ void AttachLayer(unsigned int index, vtkTextureObject* texture, int layer);
  * draw framebuffer (layered: a draw's gl_Layer chooses the layer). */
 void AttachLayered(unsigned int index, vtkTextureObject* texture);
 
+/** Attaches all the layers of each of the 3D @p targets, in order, as colour attachments
+ * 0, 1, ... of @p framebuffer (bound as the draw framebuffer) and draws into them all. */
+void AttachLayeredTargets(
+  vtkOpenGLFramebufferObject* framebuffer, std::initializer_list<vtkTextureObject*> targets);
+
 /** Draws @p quad (a program with the layered geometry shader) into layers
  * [@p first, @p first + @p count) of the layered attachments: one draw call. */
 void DrawInstances(vtkOpenGLQuadHelper* quad, vtkShaderProgram* program, int first, int count);

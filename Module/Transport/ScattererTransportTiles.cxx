@@ -117,12 +117,7 @@ void CoarseTiles::Update(vtkOpenGLRenderWindow* window, vtkOpenGLFramebufferObje
 
   // The texels the draws leave out read 0, what the Jacobi pass writes where there is no
   // medium.
-  unsigned int index = 0;
-  for (vtkTextureObject* target : fluence)
-  {
-    AttachLayered(index++, target);
-  }
-  framebuffer->ActivateDrawBuffers(index);
+  AttachLayeredTargets(framebuffer, fluence);
   vtkOpenGLState* state = window->GetState();
   state->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
   state->vtkglClear(GL_COLOR_BUFFER_BIT);
@@ -143,12 +138,7 @@ void DrawTiles(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLQuadHelper* qua
   vtkShaderProgram* program, std::initializer_list<vtkTextureObject*> targets,
   const CoarseTiles& tiles)
 {
-  unsigned int index = 0;
-  for (vtkTextureObject* target : targets)
-  {
-    AttachLayered(index++, target);
-  }
-  framebuffer->ActivateDrawBuffers(index);
+  AttachLayeredTargets(framebuffer, targets);
   if (tiles.Count > 0)
   {
     ScopedSampler rects(program, "st_tileRects", tiles.Rects);

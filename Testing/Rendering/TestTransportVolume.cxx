@@ -154,16 +154,6 @@ Filler Slab(int zLo, int zHi)
   return [=](int, int, int k) -> unsigned char { return k >= zLo && k <= zHi ? 200 : 0; };
 }
 
-// A ball of radius 5 voxels at (24, 24, 36) over a plate z in [4, 6] (for a 48^3 volume).
-Filler BallOverPlate()
-{
-  return [](int i, int j, int k) -> unsigned char
-  {
-    const double r2 = (i - 24.0) * (i - 24.0) + (j - 24.0) * (j - 24.0) + (k - 36.0) * (k - 36.0);
-    return (r2 <= 25.0 || (k >= 4 && k <= 6)) ? 200 : 0;
-  };
-}
-
 // The slab z in [zLo, zHi] of an n^3 volume of voxels `spacing` wide, opacity `alpha`
 // per unit, lit by a directional light from (x, y, z).
 struct LitSlab
@@ -173,6 +163,27 @@ struct LitSlab
     : Scene(MakeVolume(n, spacing, Slab(zLo, zHi)), alpha)
   {
     this->Scene.SetDirectional(x, y, z);
+  }
+};
+
+// A ball of radius 5 voxels at (24, 24, 36) over a plate z in [4, 6] in a 48^3 volume
+// of voxels `spacing` wide, opacity `alpha` per unit, lit by a directional light from
+// (0.25, 0, 1).
+struct LitBallOverPlate
+{
+  static constexpr int kSize = 48;
+  TransportScene Scene;
+  LitBallOverPlate(double spacing, double alpha)
+    : Scene(MakeVolume(kSize, spacing,
+              [](int i, int j, int k) -> unsigned char
+              {
+                const double r2 =
+                  (i - 24.0) * (i - 24.0) + (j - 24.0) * (j - 24.0) + (k - 36.0) * (k - 36.0);
+                return (r2 <= 25.0 || (k >= 4 && k <= 6)) ? 200 : 0;
+              }),
+        alpha)
+  {
+    this->Scene.SetDirectional(0.25, 0, 1.0);
   }
 };
 
@@ -393,10 +404,9 @@ TEST(TransportVolume, SphereShadowFallsWhereGeometryPutsIt)
   // An opaque ball (radius 5 at (24, 24, 36)) over a plate (z in [4, 6]); light
   // toward (0.25, 0, 1): at z = 7 the ball's shadow is centred at x = 24 - 0.25 (36 - 7)
   // = 16.75, an ellipse of half-width 5 / cos(14 deg) = 5.2 along x and 5 along y.
-  const int n = 48;
-  auto image = MakeVolume(n, 1.0, BallOverPlate());
-  TransportScene scene(image, 0.95);
-  scene.SetDirectional(0.25, 0, 1.0);
+  const int n = LitBallOverPlate::kSize;
+  LitBallOverPlate lit(1.0, 0.95);
+  TransportScene& scene = lit.Scene;
   const auto t = scene.Transmittance();
   ASSERT_EQ(t.size(), static_cast<size_t>(n * n * n));
   // Just above the plate (z = 7): dark at the predicted place, lit one ball width
@@ -930,10 +940,9 @@ TEST(TransportVolume, KernelReadAtItsCentroidStaysWithinItsBoundOfThePhotons)
   // shadow's edge the sharpest change of A there is. One directional light of intensity
   // 1: A is its transmittance. The light read both ways differs only in its single
   // scattering (the same diffusion and ambient light are added to both).
-  const int n = 48;
-  auto image = MakeVolume(n, 0.5, BallOverPlate());
-  TransportScene scene(image, 0.95);
-  scene.SetDirectional(0.25, 0, 1.0);
+  const int n = LitBallOverPlate::kSize;
+  LitBallOverPlate lit(0.5, 0.95);
+  TransportScene& scene = lit.Scene;
   const auto transmittance = scene.Transmittance();
   const auto centroid = scene.ReceivedLight();
   scene.Mapper->SetGatherAtCentroidForTesting(false);
@@ -1063,10 +1072,9 @@ TEST(TransportVolume, DiffusionOnTilesIsTheSolveOnEveryTexel)
   // out read 0, what the solve writes where there is no medium. The ball over the plate
   // of SphereShadowFallsWhereGeometryPutsIt, most of its grid empty: the light received
   // is the same, texel for texel, and the multiple scattering is a visible part of it.
-  const int n = 48;
-  auto image = MakeVolume(n, 1.0, BallOverPlate());
-  TransportScene scene(image, 0.3);
-  scene.SetDirectional(0.25, 0, 1.0);
+  const int n = LitBallOverPlate::kSize;
+  LitBallOverPlate lit(1.0, 0.3);
+  TransportScene& scene = lit.Scene;
   // First a medium in every texel, so that the solve fills the whole coarse grid; then,
   // in the same transport volume, the ball and the plate: what the tiles leave out must
   // read 0 again, not the light of the build before.
