@@ -50,6 +50,17 @@ vec3 st_compressHighlights(vec3 light)
 // geometric interpolation takes the light as that floor (no division by zero).
 vec3 st_lightEnd;
 const vec3 st_lightFloor = vec3(1.0e-4);
+
+// The factor from one sample's light to the next's in a group: the ratio r of the
+// group's two reads to the power 1/n, n = @LIGHT_STRIDE@. For the strides
+// lightReadStride picks (2 and 4) by square roots, exactly: pow(r, 1/n) is
+// exp2(log2(r) / n), which llvmpipe evaluates by polynomials in every lane
+// (docs/rendering.md, "Fewer light reads"). The condition is a constant.
+vec3 st_strideRoot(vec3 r)
+{
+  const int n = @LIGHT_STRIDE@;
+  return n == 4 ? sqrt(sqrt(r)) : (n == 2 ? sqrt(r) : pow(r, vec3(1.0 / float(n))));
+}
 //ST::ENDIF
 //ST::ENDIF
 

@@ -9,8 +9,8 @@
     // ray (docs/model.md, "Fewer light reads").
     vec3 st_lightStart = st_lightEnd;
     st_lightEnd = st_transportRead(g_dataPos + float(@LIGHT_STRIDE@) * g_dirStep);
-    vec3 st_lightStep = pow(max(st_lightEnd, st_lightFloor) / max(st_lightStart, st_lightFloor),
-      vec3(1.0 / float(@LIGHT_STRIDE@)));
+    vec3 st_lightStep =
+      st_strideRoot(max(st_lightEnd, st_lightFloor) / max(st_lightStart, st_lightFloor));
     vec3 st_light = max(st_lightStart, st_lightFloor);
       {
 //ST::ELSE
