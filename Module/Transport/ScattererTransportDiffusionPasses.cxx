@@ -33,10 +33,10 @@ void DrawSource(const TransportPass& pass, const SweepPlan& plan, const CoarseGr
   program->SetUniform3f("st_coarseDims", u.Dims);
   program->SetUniform3f("st_coarseToGrid", u.ToGrid);
   program->SetUniformi("st_block", coarse.Block);
+  program->SetUniformi("st_atlasColumns", u.AtlasColumns);
   ScopedSampler fineScattering(program, "st_fineScattering", pass.Textures.FineScattering);
   ScopedArrivingLight arriving(program, pass, plan);
-  DrawTiles(pass.Framebuffer, pass.Programs.Source.get(), program, { pass.Textures.CoarseSource },
-    pass.Textures.Tiles);
+  DrawTiles(pass.Framebuffer, program, pass.Textures.CoarseSource, pass.Textures.Tiles);
   pass.Progress.StepDone();
 }
 
@@ -49,6 +49,7 @@ vtkTextureObject* Diffuse(const TransportPass& pass, const CoarseUniforms& u, in
   vtkShaderProgram* program = UseProgram(pass.Window, pass.Programs.Diffuse.get());
   program->SetUniform3f("st_coarseDims", u.Dims);
   program->SetUniform3f("st_h", u.H);
+  program->SetUniformi("st_atlasColumns", u.AtlasColumns);
   ScopedSampler medium(program, "st_coarseMedium", textures.CoarseMedium);
   ScopedSampler source(program, "st_coarseSource", textures.CoarseSource);
   int current = 0;
@@ -57,8 +58,7 @@ vtkTextureObject* Diffuse(const TransportPass& pass, const CoarseUniforms& u, in
     {
       ScopedSampler previous(program, "st_previous", textures.Fluence[1 - current]);
       program->SetUniformi("st_first", i == 0 ? 1 : 0);
-      DrawTiles(pass.Framebuffer, pass.Programs.Diffuse.get(), program,
-        { textures.Fluence[current] }, textures.Tiles);
+      DrawTiles(pass.Framebuffer, program, textures.Fluence[current], textures.Tiles);
     }
     current = 1 - current;
     pass.Progress.StepDone();
@@ -78,14 +78,16 @@ bool SolveMultipleScattering(
 {
   const CoarseGrid coarse =
     CoarseGrid::Over(pass.Grid, pass.In.Downsample, pass.In.StillDownsample);
-  if (!pass.Textures.AllocateCoarse(pass.Window, coarse.Dims, why))
+  int atlas[2];
+  coarse.GetAtlasSize(atlas);
+  if (!pass.Textures.AllocateCoarse(pass.Window, coarse.Dims, atlas, why))
   {
     return false;
   }
   const CoarseUniforms uniforms(pass.Grid, coarse);
   vtkOpenGLState* state = pass.Window->GetState();
   state->vtkglDisable(GL_BLEND);
-  state->vtkglViewport(0, 0, coarse.Dims[0], coarse.Dims[1]);
+  state->vtkglViewport(0, 0, atlas[0], atlas[1]);
   DrawSource(pass, plan, coarse, uniforms);
   fluence = Diffuse(pass, uniforms, DiffusionIterations(pass.In));
   return true;
@@ -112,5 +114,6 @@ ScopedScatteredLight::ScopedScatteredLight(
   program->SetUniform3f("st_coarseToGrid", u.ToGrid);
   program->SetUniformf("st_block", static_cast<float>(coarse.Block));
   program->SetUniformf("st_strength", pass.In.MultipleScattering);
+  program->SetUniformi("st_atlasColumns", u.AtlasColumns);
 }
 }

@@ -130,7 +130,39 @@ CoarseGrid CoarseGrid::Over(const TransportGrid& grid, int downsample, int still
     coarse.ToGrid[a] = coarse.Block * coarseFirst - first;
     coarse.Dims[a] = FloorDiv(first + grid.Dims[a] - 1, coarse.Block) - coarseFirst + 1;
   }
+  coarse.AtlasColumns = AtlasColumnsFor(coarse.Dims, kAtlasMaxSide);
   return coarse;
+}
+
+int AtlasColumnsFor(const int dims[3], int maxSide)
+{
+  const long long layers = std::max(1, dims[2]);
+  int best = 1;
+  long long bestEmpty = 0, bestSide = 0;
+  for (int columns = 1; columns <= layers; ++columns)
+  {
+    const long long rows = (layers + columns - 1) / columns;
+    const long long empty = columns * rows - layers;
+    const long long side = std::max(columns * static_cast<long long>(dims[0]), rows * dims[1]);
+    const bool fits = side <= maxSide, bestFits = bestSide <= maxSide;
+    const bool better = columns == 1 || (fits && !bestFits) ||
+      (fits == bestFits &&
+        (fits ? (empty < bestEmpty || (empty == bestEmpty && side < bestSide)) : side < bestSide));
+    if (better)
+    {
+      best = columns;
+      bestEmpty = empty;
+      bestSide = side;
+    }
+  }
+  return best;
+}
+
+void CoarseGrid::GetAtlasSize(int size[2]) const
+{
+  const int layers = std::max(1, this->Dims[2]);
+  size[0] = this->AtlasColumns * this->Dims[0];
+  size[1] = ((layers + this->AtlasColumns - 1) / this->AtlasColumns) * this->Dims[1];
 }
 
 void CoarseGrid::GetDims(float dims[3]) const
@@ -157,6 +189,7 @@ CoarseUniforms::CoarseUniforms(const TransportGrid& grid, const CoarseGrid& coar
   {
     this->H[a] = static_cast<float>(coarse.Block * grid.TexelLength(a));
   }
+  this->AtlasColumns = coarse.AtlasColumns;
 }
 
 void SweepPlan::GetSweepDims(const TransportGrid& grid, int dims[3]) const

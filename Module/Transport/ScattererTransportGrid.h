@@ -62,6 +62,12 @@ struct CoarseGrid
   /// frame built at twice a still frame's scale or more (while the user drags), so that
   /// its medium is sampled about as finely as a still frame's; 1 (the centre) otherwise.
   int Subsamples = 1;
+  /// The source and Jacobi passes draw the grid as a 2D atlas of its layers: layer z is
+  /// the tile (z % AtlasColumns, z / AtlasColumns) of Dims[0] x Dims[1] texels. llvmpipe
+  /// shares a draw among its threads by 64x64 tiles of the framebuffer, all layers of a
+  /// 3D target in one, so the CT head's coarse layers (65x65) ran on one thread; its atlas
+  /// (4 columns of 7 layers, 260x455 texels) gives every thread tiles.
+  int AtlasColumns = 1;
 
   /**
    * The coarse grid over @p grid for volume voxels per fine texel @p downsample, its
@@ -73,14 +79,27 @@ struct CoarseGrid
 
   void GetDims(float dims[3]) const;
   void GetToGrid(float toGrid[3]) const;
+  /** The atlas's width and height in texels. */
+  void GetAtlasSize(int size[2]) const;
 };
 
-/** The coarse grid as the coarse passes' uniforms (st_coarseDims, st_coarseToGrid, st_h). */
+/** The longest side CoarseGrid::Over gives an atlas where it can: 2D textures of 8192
+ * texels a side are allocated by the GPUs VTK runs on (OpenGL 4.1 asks 16384). */
+constexpr int kAtlasMaxSide = 8192;
+
+/** The columns of the atlas of a grid of @p dims (CoarseGrid::AtlasColumns): the fewest
+ * empty tiles within @p maxSide texels a side, of those the most nearly square (of equal
+ * sides, the fewer columns); the most nearly square if none fits. */
+int AtlasColumnsFor(const int dims[3], int maxSide);
+
+/** The coarse grid as the coarse passes' uniforms (st_coarseDims, st_coarseToGrid, st_h,
+ * st_atlasColumns). */
 struct CoarseUniforms
 {
   float Dims[3];
   float ToGrid[3];
-  float H[3]; ///< coarse texel size along each axis, world units
+  float H[3];       ///< coarse texel size along each axis, world units
+  int AtlasColumns; ///< st_atlasColumns
 
   CoarseUniforms(const TransportGrid& grid, const CoarseGrid& coarse);
 };

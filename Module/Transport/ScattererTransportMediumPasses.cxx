@@ -120,7 +120,9 @@ bool BuildMediumTextures(const TransportPass& pass, std::string& why)
 {
   const CoarseGrid coarse =
     CoarseGrid::Over(pass.Grid, pass.In.Downsample, pass.In.StillDownsample);
-  if (!pass.Textures.AllocateCoarse(pass.Window, coarse.Dims, why))
+  int atlas[2];
+  coarse.GetAtlasSize(atlas);
+  if (!pass.Textures.AllocateCoarse(pass.Window, coarse.Dims, atlas, why))
   {
     return false;
   }

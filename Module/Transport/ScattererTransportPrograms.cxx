@@ -17,6 +17,7 @@
 
 #include "scatterer_transport_arrive.h"
 #include "scatterer_transport_arriving.h"
+#include "scatterer_transport_atlas.h"
 #include "scatterer_transport_coarsen.h"
 #include "scatterer_transport_common.h"
 #include "scatterer_transport_count.h"
@@ -48,8 +49,8 @@ const char* const kCompileFailed =
   "the transport shaders failed to compile on this OpenGL implementation";
 
 // The common declarations, after the variant's defines, the materials', the sweeps', the
-// arriving light's, the scattered light's and the stored gather's functions go where the
-// pass has their tags.
+// arriving light's, the scattered light's, the coarse atlas's and the stored gather's
+// functions go where the pass has their tags.
 std::string WithCommon(const char* pass, const std::string& variant)
 {
   std::string text = pass;
@@ -59,6 +60,7 @@ std::string WithCommon(const char* pass, const std::string& variant)
     { "//VTK::Transport::Sweep", scatterer_transport_sweep_common },
     { "//VTK::Transport::Arriving", scatterer_transport_arriving },
     { "//VTK::Transport::Scattered", scatterer_transport_scattered },
+    { "//VTK::Transport::Atlas", scatterer_transport_atlas },
     { "//VTK::Transport::StoredGather", scatterer_transport_stored_gather } };
   for (const auto& chunk : chunks)
   {
@@ -112,14 +114,16 @@ bool TransportPrograms::Create(
       scatterer_transport_gather, variant + "#define ST_GATHER " + std::to_string(g) + "\n"));
   }
   this->Count = quad(WithCommon(scatterer_transport_count, variant));
-  // The diffusion's passes draw the coarse texels that hold a medium (ScattererTransportTiles.h).
+  // The diffusion's passes draw the coarse texels that hold a medium
+  // (ScattererTransportTiles.h) into the coarse grid's atlas: 2D targets, no layers.
+  const std::string tilesVertex = WithCommon(scatterer_transport_tiles_vs, "");
   auto tiles = [&](const std::string& fs)
   {
-    return std::unique_ptr<vtkOpenGLQuadHelper>(new vtkOpenGLQuadHelper(
-      window, scatterer_transport_tiles_vs, fs.c_str(), scatterer_transport_layers_gs));
+    return std::unique_ptr<vtkOpenGLQuadHelper>(
+      new vtkOpenGLQuadHelper(window, tilesVertex.c_str(), fs.c_str(), ""));
   };
   this->Source = tiles(WithCommon(scatterer_transport_source, variant));
-  this->Diffuse = tiles(scatterer_transport_diffuse);
+  this->Diffuse = tiles(WithCommon(scatterer_transport_diffuse, ""));
   for (auto* q : this->All())
   {
     if (!(*q)->Program)

@@ -84,6 +84,29 @@ std::vector<float> DownloadTexture3D(vtkTextureObject* texture, int components)
   return data;
 }
 
+std::vector<float> DownloadAtlas(vtkTextureObject* atlas, const int dims[3], int columns)
+{
+  const size_t width = atlas->GetWidth(), height = atlas->GetHeight();
+  std::vector<float> texels(4 * width * height);
+  atlas->Activate();
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, texels.data());
+  atlas->Deactivate();
+  std::vector<float> grid;
+  grid.reserve(4 * static_cast<size_t>(dims[0]) * dims[1] * dims[2]);
+  for (int z = 0; z < dims[2]; ++z)
+  {
+    const size_t x0 = static_cast<size_t>(z % columns) * dims[0];
+    const size_t y0 = static_cast<size_t>(z / columns) * dims[1];
+    for (int y = 0; y < dims[1]; ++y)
+    {
+      const float* row = texels.data() + 4 * ((y0 + y) * width + x0);
+      grid.insert(grid.end(), row, row + 4 * static_cast<size_t>(dims[0]));
+    }
+  }
+  return grid;
+}
+
 bool TransportTextures::AllocateFine(
   vtkOpenGLRenderWindow* window, const int dims[3], std::string& why)
 {
@@ -194,34 +217,40 @@ bool TransportTextures::AllocateLines(
 }
 
 bool TransportTextures::AllocateCoarse(
-  vtkOpenGLRenderWindow* window, const int dims[3], std::string& why)
+  vtkOpenGLRenderWindow* window, const int dims[3], const int atlas[2], std::string& why)
 {
-  if (HasSize(this->Fluence[0], dims[0], dims[1], dims[2]) &&
+  if (HasSize(this->Fluence[0], atlas[0], atlas[1], 1) &&
     HasSize(this->CoarseOcclusion, dims[0], dims[1], dims[2]))
   {
     return true;
   }
   ++this->MediumAllocations;
-  for (auto* grid :
-    { &this->Fluence[0], &this->Fluence[1], &this->CoarseMedium, &this->CoarseSource })
+  bool allocated = Allocate16F(window, this->CoarseMedium, dims) &&
+    Allocate16F(window, this->CoarseOcclusion, dims, 1);
+  for (auto* grid : { &this->Fluence[0], &this->Fluence[1], &this->CoarseSource })
   {
-    if (!Allocate16F(window, *grid, dims))
+    // The gather reads the fluence linearly, within a layer's tile (st_atlasLinear).
+    *grid = NewTransportTexture(window, true, vtkTextureObject::ClampToEdge);
+    (*grid)->SetInternalFormat(GL_RGBA16F);
+    (*grid)->SetFormat(GL_RGBA);
+    if (allocated && !(*grid)->Allocate2D(atlas[0], atlas[1], 4, VTK_FLOAT))
     {
-      why = "the diffusion textures could not be allocated";
-      return false;
+      *grid = nullptr; // allocated again next time
+      allocated = false;
     }
   }
-  if (!Allocate16F(window, this->CoarseOcclusion, dims, 1))
+  if (!allocated)
   {
-    why = "the diffusion textures could not be allocated";
-    return false;
+    why = "the diffusion textures could not be allocated (atlas of " + std::to_string(atlas[0]) +
+      " x " + std::to_string(atlas[1]) + " texels)";
+    this->Fluence[0] = nullptr;
   }
-  return true;
+  return allocated;
 }
 
 size_t TransportTextures::GetGPUBytes() const
 {
-  constexpr size_t rgba32f = 16, rgba16f = 8, r11g11b10f = 4, r16f = 2, r8 = 1;
+  constexpr size_t rgba16f = 8, r11g11b10f = 4, r16f = 2, r8 = 1;
   return r11g11b10f * Texels(this->FineScattering) + r8 * Texels(this->FineGather) +
     rgba16f *
     (Texels(this->Light) + Texels(this->Arriving) + Texels(this->Fluence[0]) +
@@ -230,7 +259,7 @@ size_t TransportTextures::GetGPUBytes() const
     (Texels(this->Transmittance) + Texels(this->Slices[0]) + Texels(this->Slices[1]) +
       2 * Texels(this->Lines) + 4 * (Texels(this->LineEnds[0]) + Texels(this->LineEnds[1])) +
       Texels(this->CoarseOcclusion)) +
-    rgba32f * Texels(this->Tiles.Rects);
+    this->Tiles.GetGPUBytes();
 }
 
 void TransportTextures::ReleaseGraphicsResources(vtkWindow* window)
@@ -246,6 +275,6 @@ void TransportTextures::ReleaseGraphicsResources(vtkWindow* window)
       *t = nullptr;
     }
   }
-  this->Tiles.ReleaseGraphicsResources(window);
+  this->Tiles.ReleaseGraphicsResources();
 }
 }

@@ -25,6 +25,10 @@ vtkSmartPointer<vtkTextureObject> NewTransportTexture(
 /** The float texels of 3D @p texture, RED (1 component) or RGBA (4), x fastest. */
 std::vector<float> DownloadTexture3D(vtkTextureObject* texture, int components);
 
+/** The RGBA texels of a grid of @p dims that 2D @p atlas holds, its layers side by side in
+ * @p columns columns (CoarseGrid::AtlasColumns), in grid order (x fastest). */
+std::vector<float> DownloadAtlas(vtkTextureObject* atlas, const int dims[3], int columns);
+
 /** The render targets of the transport passes. */
 struct TransportTextures
 {
@@ -47,9 +51,11 @@ struct TransportTextures
   vtkSmartPointer<vtkTextureObject> Lines;
   /// RG32F, 2D, per line: T where a draw of the lines leaves it, and that step (ping-pong)
   vtkSmartPointer<vtkTextureObject> LineEnds[2];
-  vtkSmartPointer<vtkTextureObject> Fluence[2];      ///< RGBA16F, coarse grid: diffusion ping-pong
-  vtkSmartPointer<vtkTextureObject> CoarseMedium;    ///< RGBA16F, coarse grid: albedo, sigma_t
-  vtkSmartPointer<vtkTextureObject> CoarseSource;    ///< RGBA16F, coarse grid: light scattered once
+  /// RGBA16F, 2D, the coarse grid's atlas (CoarseGrid::AtlasColumns): diffusion ping-pong
+  vtkSmartPointer<vtkTextureObject> Fluence[2];
+  vtkSmartPointer<vtkTextureObject> CoarseMedium; ///< RGBA16F, coarse grid: albedo, sigma_t
+  /// RGBA16F, 2D, the coarse grid's atlas: light scattered once
+  vtkSmartPointer<vtkTextureObject> CoarseSource;
   vtkSmartPointer<vtkTextureObject> CoarseOcclusion; ///< R16F, coarse grid: ambient occlusion
   /// The coarse texels the diffusion draws: those of CoarseMedium that hold a medium
   CoarseTiles Tiles;
@@ -81,8 +87,10 @@ struct TransportTextures
   bool AllocateLines(
     vtkOpenGLRenderWindow* window, const int sweepDims[3], const int lineDims[2], std::string& why);
 
-  /** The five coarse grids of @p dims; false with @p why set if refused. */
-  bool AllocateCoarse(vtkOpenGLRenderWindow* window, const int dims[3], std::string& why);
+  /** The five coarse grids of @p dims, those the diffusion draws as atlases of @p atlas
+   * texels; false with @p why set if refused. */
+  bool AllocateCoarse(
+    vtkOpenGLRenderWindow* window, const int dims[3], const int atlas[2], std::string& why);
 
   /** Bytes of GPU memory the textures held take. */
   size_t GetGPUBytes() const;

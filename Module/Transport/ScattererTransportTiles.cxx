@@ -4,8 +4,9 @@
 #include "ScattererTransportPrograms.h"
 #include "ScattererTransportTextures.h"
 
+#include "vtkNew.h"
+#include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLFramebufferObject.h"
-#include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
@@ -103,54 +104,78 @@ void CoarseTiles::Update(vtkOpenGLRenderWindow* window, vtkOpenGLFramebufferObje
       return !onTiles || (medium[4 * i + 3] & 0x7fffu) != 0; // +-0: no medium
     });
   this->Count = static_cast<int>(rects.size());
-  const int rows = std::max(1, (this->Count + kRowRects - 1) / kRowRects);
-  std::vector<float> texels(static_cast<size_t>(8 * kRowRects * rows), 0.0f);
-  for (size_t r = 0; r < rects.size(); ++r)
+  std::vector<float> corners;
+  corners.reserve(18 * rects.size());
+  for (const TexelRect& t : rects)
   {
-    const TexelRect& t = rects[r];
-    const float values[8] = { static_cast<float>(t.X0), static_cast<float>(t.Y0),
-      static_cast<float>(t.X1), static_cast<float>(t.Y1), static_cast<float>(t.Z), 0, 0, 0 };
-    std::copy_n(values, 8, texels.data() + 8 * r);
+    const float x0 = static_cast<float>(t.X0), y0 = static_cast<float>(t.Y0),
+                x1 = static_cast<float>(t.X1), y1 = static_cast<float>(t.Y1),
+                z = static_cast<float>(t.Z);
+    for (const float corner : { x0, y0, z, x1, y0, z, x0, y1, z, x0, y1, z, x1, y0, z, x1, y1, z })
+    {
+      corners.push_back(corner);
+    }
   }
-  this->Rects = NewTransportTexture(window, false, vtkTextureObject::ClampToEdge);
-  this->Rects->Create2DFromRaw(2 * kRowRects, rows, 4, VTK_FLOAT, texels.data());
+  if (!this->Corners)
+  {
+    this->Corners = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+    this->Corners->SetType(vtkOpenGLBufferObject::ArrayBuffer);
+  }
+  if (!corners.empty())
+  {
+    this->Corners->Upload(corners, vtkOpenGLBufferObject::ArrayBuffer);
+  }
 
   // The texels the draws leave out read 0, what the Jacobi pass writes where there is no
   // medium.
-  AttachLayeredTargets(framebuffer, fluence);
   vtkOpenGLState* state = window->GetState();
   state->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-  state->vtkglClear(GL_COLOR_BUFFER_BIT);
+  for (vtkTextureObject* atlas : fluence)
+  {
+    Attach2D(0, atlas);
+    framebuffer->ActivateDrawBuffers(1);
+    state->vtkglViewport(0, 0, atlas->GetWidth(), atlas->GetHeight());
+    state->vtkglClear(GL_COLOR_BUFFER_BIT);
+  }
   DetachAll(framebuffer);
 }
 
-void CoarseTiles::ReleaseGraphicsResources(vtkWindow* window)
+size_t CoarseTiles::GetGPUBytes() const
 {
-  if (this->Rects)
+  return this->Corners ? 18 * sizeof(float) * static_cast<size_t>(this->Count) : 0;
+}
+
+void CoarseTiles::ReleaseGraphicsResources()
+{
+  if (this->Corners)
   {
-    this->Rects->ReleaseGraphicsResources(window);
-    this->Rects = nullptr;
+    this->Corners->ReleaseGraphicsResources();
+    this->Corners = nullptr;
   }
   this->Count = 0;
 }
 
-void DrawTiles(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLQuadHelper* quad,
-  vtkShaderProgram* program, std::initializer_list<vtkTextureObject*> targets,
-  const CoarseTiles& tiles)
+void DrawTiles(vtkOpenGLFramebufferObject* framebuffer, vtkShaderProgram* program,
+  vtkTextureObject* target, const CoarseTiles& tiles)
 {
-  AttachLayeredTargets(framebuffer, targets);
+  Attach2D(0, target);
+  framebuffer->ActivateDrawBuffers(1);
   if (tiles.Count > 0)
   {
-    ScopedSampler rects(program, "st_tileRects", tiles.Rects);
-    program->SetUniformi("st_firstLayer", 0);
-    program->SetUniformi("st_rowRects", CoarseTiles::kRowRects);
-    vtkTextureObject* first = *targets.begin();
-    const float dims[2] = { static_cast<float>(first->GetWidth()),
-      static_cast<float>(first->GetHeight()) };
-    program->SetUniform2f("st_tileDims", dims);
-    quad->VAO->Bind();
-    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, tiles.Count);
-    quad->VAO->Release();
+    // The program's attributes, as the quad's arrays bind them, from the corners: a
+    // corner's (x, y, z) as ndCoordIn, its (x, y) as texCoordIn.
+    vtkNew<vtkOpenGLVertexArrayObject> corners;
+    corners->Bind();
+    constexpr size_t stride = 3 * sizeof(float);
+    if (corners->AddAttributeArray(
+          program, tiles.Corners, "ndCoordIn", 0, stride, VTK_FLOAT, 3, false) &&
+      corners->AddAttributeArray(
+        program, tiles.Corners, "texCoordIn", 0, stride, VTK_FLOAT, 2, false))
+    {
+      glDrawArrays(GL_TRIANGLES, 0, 6 * tiles.Count);
+    }
+    corners->Release();
+    corners->ReleaseGraphicsResources();
   }
   DetachAll(framebuffer);
 }

@@ -12,12 +12,13 @@
 
 #include "vtkSmartPointer.h"
 
+#include <cstddef> // for size_t
 #include <functional>
 #include <initializer_list>
 #include <vector>
 
+class vtkOpenGLBufferObject;
 class vtkOpenGLFramebufferObject;
-class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 class vtkShaderProgram;
 class vtkTextureObject;
@@ -47,27 +48,30 @@ std::vector<TexelRect> CoverTexels(
 /** The rectangles of the coarse grid the diffusion draws, on the GPU. */
 struct CoarseTiles
 {
-  /// RGBA32F, 2 texels a rectangle (x0, y0, x1, y1) and (z, 0, 0, 0), kRowRects
-  /// rectangles a row (scatterer_transport_tiles_vs.glsl)
-  vtkSmartPointer<vtkTextureObject> Rects;
-  int Count = 0;
-  static constexpr int kRowRects = 512;
+  /// Two triangles a rectangle, 3 floats a corner: (x, y) in coarse texels and the layer z
+  /// (scatterer_transport_tiles_vs.glsl). Vertices, not instances of one quad: llvmpipe
+  /// spends about 10 microseconds on each instance of a draw, 7 ms a pass for the CT
+  /// head's 601 rectangles, where their fragments take under 1 ms.
+  vtkSmartPointer<vtkOpenGLBufferObject> Corners;
+  int Count = 0; ///< rectangles
 
   /** The rectangles around the texels of @p coarseMedium (RGBA: albedo, sigma_t) whose
-   * sigma_t is not 0 (@p onTiles; else whole layers), uploaded; and @p fluence cleared
-   * to 0 (what is left out is read as such). */
+   * sigma_t is not 0 (@p onTiles; else whole layers), uploaded; and the @p fluence
+   * atlases cleared to 0 (what is left out is read as such). */
   void Update(vtkOpenGLRenderWindow* window, vtkOpenGLFramebufferObject* framebuffer,
     vtkTextureObject* coarseMedium, std::initializer_list<vtkTextureObject*> fluence, bool onTiles);
 
-  void ReleaseGraphicsResources(vtkWindow* window);
+  /** Bytes the rectangles take on the GPU. */
+  size_t GetGPUBytes() const;
+
+  void ReleaseGraphicsResources();
 };
 
-/** Draws @p quad (a program with scatterer_transport_tiles_vs.glsl and the layered
- * geometry shader) over the rectangles of @p tiles into the 3D @p targets (attached
- * layered in order) in one draw call. Detaches them after. */
-void DrawTiles(vtkOpenGLFramebufferObject* framebuffer, vtkOpenGLQuadHelper* quad,
-  vtkShaderProgram* program, std::initializer_list<vtkTextureObject*> targets,
-  const CoarseTiles& tiles);
+/** Draws with @p program (in use; scatterer_transport_tiles_vs.glsl) over the rectangles
+ * of @p tiles into @p target, the coarse grid's atlas (CoarseGrid::AtlasColumns; the
+ * viewport its size), in one draw call. Detaches it after. */
+void DrawTiles(vtkOpenGLFramebufferObject* framebuffer, vtkShaderProgram* program,
+  vtkTextureObject* target, const CoarseTiles& tiles);
 }
 
 #endif

@@ -15,15 +15,16 @@
 //            / (2 D sum_a 1 / h_a^2 + sigma_a)
 // Where there is no medium the light escapes (phi = 0), as it does past the grid.
 // The coarse medium comes from pass 0b (scatterer_transport_coarsen.glsl), the
-// source from pass 3a (scatterer_transport_source.glsl).
+// source from pass 3a (scatterer_transport_source.glsl); the source and the fluence are
+// the coarse grid's atlases (scatterer_transport_atlas.glsl).
 //============================================================================
+//VTK::Transport::Atlas
 in vec2 texCoord;
+flat in float st_layer;            // this layer (scatterer_transport_tiles_vs.glsl)
 uniform sampler3D st_coarseMedium; // coarse grid: rgb albedo, a sigma_t
-uniform sampler3D st_coarseSource; // coarse grid: rgb the light scattered once
-uniform sampler3D st_previous;     // coarse grid: phi of the last iteration (rgb)
+uniform sampler2D st_coarseSource; // coarse grid's atlas: rgb the light scattered once
+uniform sampler2D st_previous;     // coarse grid's atlas: phi of the last iteration (rgb)
 uniform int st_first;              // 1: no previous iteration (phi = 0)
-flat in float st_layer;          // this layer (scatterer_transport_layers_gs.glsl)
-uniform vec3 st_coarseDims;
 uniform vec3 st_h;                 // coarse texel size along each axis, world units
 
 vec3 st_phi(ivec3 c)
@@ -32,7 +33,7 @@ vec3 st_phi(ivec3 c)
   {
     return vec3(0.0);
   }
-  return texelFetch(st_previous, c, 0).rgb;
+  return texelFetch(st_previous, st_atlasTexel(c), 0).rgb;
 }
 
 void main()
@@ -44,7 +45,7 @@ void main()
     gl_FragData[0] = vec4(0.0);
     return;
   }
-  vec3 S = texelFetch(st_coarseSource, c, 0).rgb;
+  vec3 S = texelFetch(st_coarseSource, st_atlasTexel(c), 0).rgb;
   float D = 1.0 / (3.0 * medium.a);
   vec3 inv2 = 1.0 / (st_h * st_h);
   vec3 neighbours = (st_phi(c + ivec3(1, 0, 0)) + st_phi(c - ivec3(1, 0, 0))) * inv2.x +

@@ -2,7 +2,8 @@
 //VTK::Output::Dec
 //============================================================================
 // Light transport volume, pass 3a: the multiple-scattering source on the diffusion's
-// coarse grid (all layers in one draw), for the lights of this build. A coarse texel's
+// coarse grid (its tiles that hold a medium, into its atlas), for the lights of this
+// build. A coarse texel's
 // source is the mean over its block of st_block^3 fine texels q of the light
 // scattered once there,
 //   S(q) = sigma_s(q) A(q)
@@ -14,7 +15,7 @@
 //VTK::Transport::Arriving
 in vec2 texCoord;
 uniform sampler3D st_fineScattering; // pass 0a: rgb = sigma_s / cosh(tau_half)
-flat in float st_layer;          // this layer (scatterer_transport_layers_gs.glsl)
+flat in float st_layer;            // this layer (scatterer_transport_tiles_vs.glsl)
 uniform vec3 st_coarseDims;
 uniform vec3 st_coarseToGrid;      // coarse texel c covers fine positions c * st_block + st_coarseToGrid + [0, st_block)
 uniform int st_block;

@@ -2,29 +2,24 @@
 //============================================================================
 // Light transport volume: the vertex shader of the diffusion's passes (source and
 // Jacobi), which draw only the coarse texels that hold a medium
-// (ScattererTransportTiles.h). Instance i of the quad is rectangle i of st_tileRects:
-// texels [x0, x1) x [y0, y1) of layer z. It goes there as the full-screen quad's
-// instance goes to its layer (scatterer_transport_layers_gs.glsl, with st_firstLayer
-// 0), and its fragments get texCoord and st_layer as the full-screen quad's would.
+// (ScattererTransportTiles.h), into the coarse grid's atlas
+// (scatterer_transport_atlas.glsl). The vertices are the corners of the rectangles, two
+// triangles each: texels [x0, x1) x [y0, y1) of layer z, drawn in layer z's tile. Their
+// fragments get texCoord (in the layer) and st_layer as a full-screen quad's layer
+// would (scatterer_transport_layers_gs.glsl).
 //============================================================================
-in vec4 ndCoordIn;
-in vec2 texCoordIn;
-uniform sampler2D st_tileRects; // 2 texels a rectangle: (x0, y0, x1, y1), (z, 0, 0, 0)
-uniform int st_rowRects;        // rectangles a row of st_tileRects
-uniform vec2 st_tileDims;       // a layer's texels (columns, rows)
-out vec2 st_quadCoord;
-flat out int st_instance;
+//VTK::Transport::Atlas
+in vec4 ndCoordIn;  // the corner: (x, y) in texels, z its layer
+in vec2 texCoordIn; // the corner's (x, y) again (the quad's two attributes are kept)
+out vec2 texCoord;
+flat out float st_layer;
 
 void main()
 {
-  ivec2 at = ivec2(2 * (gl_InstanceID % st_rowRects), gl_InstanceID / st_rowRects);
-  vec4 rect = texelFetch(st_tileRects, at, 0);
-  float z = texelFetch(st_tileRects, at + ivec2(1, 0), 0).r;
-  // The quad's corner, (0, 0) to (1, 1): x from its position, y from its texture
-  // coordinate, so that the program keeps both attributes vtkOpenGLQuadHelper binds.
-  vec2 corner = vec2(ndCoordIn.x * 0.5 + 0.5, texCoordIn.y);
-  vec2 t = mix(rect.xy, rect.zw, corner) / st_tileDims;
-  gl_Position = vec4(2.0 * t - vec2(1.0), 0.0, 1.0);
-  st_quadCoord = t;
-  st_instance = int(z + 0.5);
+  vec2 atlas = vec2(st_atlasTexel(ivec3(0, 0, int(ndCoordIn.z + 0.5)))) + texCoordIn;
+  vec2 size = st_coarseDims.xy *
+    vec2(st_atlasColumns, (int(st_coarseDims.z) + st_atlasColumns - 1) / st_atlasColumns);
+  gl_Position = vec4(2.0 * atlas / size - vec2(1.0), 0.0, 1.0);
+  texCoord = texCoordIn / st_coarseDims.xy;
+  st_layer = ndCoordIn.z;
 }

@@ -59,6 +59,7 @@ struct vtkScattererTransportVolume::vtkInternals
   StageMilliseconds LastStages;
   int Builds = 0;
   scatterer_gpu::SweepPlan CurrentPlan; // of the light whose transmittance the texture holds
+  vtkTextureObject* Fluence = nullptr;  // of the Textures' fluence atlases, the one last solved
   Inputs Last;                      // of the last build (ReadTransmittance sweeps again from it)
   bool SweepLinesInParallel = true; // the object's, at the last Update or ReadTransmittance
 
@@ -180,6 +181,7 @@ bool vtkScattererTransportVolume::vtkInternals::RunPasses(
   if (ok)
   {
     lap(this->LastStages.Diffusion);
+    this->Fluence = fluence;
     scatterer_gpu::GatherLight(pass, this->CurrentPlan, fluence);
     lap(this->LastStages.Gather);
     this->Progress.BuildDone();
@@ -197,6 +199,7 @@ void vtkScattererTransportVolume::vtkInternals::Release(vtkWindow* window)
   this->Context = nullptr;
   this->HasKey = false;
   this->HasMedium = false;
+  this->Fluence = nullptr;
 }
 
 vtkScattererTransportVolume::vtkScattererTransportVolume()
@@ -329,6 +332,36 @@ std::vector<float> vtkScattererTransportVolume::ReadLight(vtkOpenGLRenderWindow*
     rgb.insert(rgb.end(), { rgba[i], rgba[i + 1], rgba[i + 2] });
   }
   return rgb;
+}
+
+vtkScattererTransportVolume::DiffusionReadBack vtkScattererTransportVolume::ReadDiffusion(
+  vtkOpenGLRenderWindow* window)
+{
+  vtkInternals& s = *this->Internals;
+  DiffusionReadBack back;
+  scatterer_gpu::TransportTextures& t = s.Textures;
+  if (!window || s.Context != window || !s.Fluence ||
+    !(s.Fluence == t.Fluence[0] || s.Fluence == t.Fluence[1]) || !t.CoarseMedium)
+  {
+    return back;
+  }
+  window->MakeCurrent();
+  const scatterer_gpu::CoarseGrid coarse =
+    scatterer_gpu::CoarseGrid::Over(s.Grid, s.Last.Downsample, s.Last.StillDownsample);
+  const scatterer_gpu::CoarseUniforms uniforms(s.Grid, coarse);
+  for (int a = 0; a < 3; ++a)
+  {
+    back.Dims[a] = coarse.Dims[a];
+    back.ToGrid[a] = coarse.ToGrid[a];
+    back.H[a] = uniforms.H[a];
+  }
+  back.Block = coarse.Block;
+  back.Medium = scatterer_gpu::DownloadTexture3D(t.CoarseMedium, 4);
+  back.Source = scatterer_gpu::DownloadAtlas(t.CoarseSource, coarse.Dims, coarse.AtlasColumns);
+  back.Fluence = scatterer_gpu::DownloadAtlas(s.Fluence, coarse.Dims, coarse.AtlasColumns);
+  back.Before = scatterer_gpu::DownloadAtlas(
+    s.Fluence == t.Fluence[0] ? t.Fluence[1] : t.Fluence[0], coarse.Dims, coarse.AtlasColumns);
+  return back;
 }
 
 vtkTextureObject* vtkScattererTransportVolume::GetLightTexture() const

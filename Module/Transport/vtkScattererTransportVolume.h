@@ -255,6 +255,24 @@ public:
   /** For tests: the received-light texture read back, RGB per grid texel. */
   std::vector<float> ReadLight(vtkOpenGLRenderWindow* window);
 
+  /** For tests: the diffusion's coarse grid of the last build, read back from its
+   * textures; each array RGBA per coarse texel in grid order (x fastest). */
+  struct DiffusionReadBack
+  {
+    int Dims[3] = { 0, 0, 0 };
+    int ToGrid[3] = { 0, 0,
+      0 }; ///< coarse texel c covers fine texels Block c + ToGrid + [0, Block)
+    int Block = 1;
+    float H[3] = { 0, 0, 0 };   ///< coarse texel size along each axis, world units
+    std::vector<float> Medium;  ///< albedo, sigma_t
+    std::vector<float> Source;  ///< the light scattered once
+    std::vector<float> Before;  ///< the fluence of the Jacobi iteration before the last
+    std::vector<float> Fluence; ///< the fluence of the last iteration, as the gather read it
+  };
+
+  /** For tests: see DiffusionReadBack; arrays empty if no build solved a diffusion. */
+  DiffusionReadBack ReadDiffusion(vtkOpenGLRenderWindow* window);
+
   void ReleaseGraphicsResources(vtkWindow* window);
 
   /**

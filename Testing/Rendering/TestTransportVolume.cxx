@@ -6,6 +6,7 @@
 #include "ScattererErrorObserver.h"
 #include "ScattererRenderHarness.h"
 #include "ScattererTestVolumes.h"
+#include "ScattererTransportGrid.h"
 #include "ScattererTransportTiles.h"
 
 #include "vtkCamera.h"
@@ -1066,6 +1067,30 @@ TEST(TransportTiles, RectanglesCoverWhatHoldsAMediumAndOnlyItsTiles)
   EXPECT_TRUE(all[0].X0 == 0 && all[0].Y0 == 0 && all[0].X1 == dims[0] && all[0].Y1 == dims[1]);
 }
 
+TEST(TransportTiles, AtlasLeavesTheFewestTilesEmptyThenIsTheMostNearlySquare)
+{
+  // (columns, rows, empty tiles, longest side) of the atlas of dims within maxSide.
+  auto layout = [](int x, int y, int z, int maxSide)
+  {
+    const int dims[3] = { x, y, z };
+    const int columns = scatterer_gpu::AtlasColumnsFor(dims, maxSide);
+    const int rows = (z + columns - 1) / columns;
+    return std::vector<int>{ columns, rows, columns * rows - z, std::max(columns * x, rows * y) };
+  };
+  // The CT head's coarse grid: 4 columns of 7 fill every tile (6 x 5 would be more nearly
+  // square; of equal sides, the fewer columns).
+  EXPECT_EQ(layout(65, 65, 28, 8192), (std::vector<int>{ 4, 7, 0, 455 }));
+  // 29 layers (a prime) fill a row or a column; within 1000 texels a side, one tile is left
+  // empty, the most nearly square of those layouts 5 x 6 (390 x 390).
+  EXPECT_EQ(layout(65, 65, 29, 8192)[2], 0);
+  EXPECT_EQ(layout(65, 65, 29, 1000), (std::vector<int>{ 5, 6, 1, 390 }));
+  // Layers wider than tall go in more rows.
+  EXPECT_EQ(layout(100, 10, 16, 8192), (std::vector<int>{ 1, 16, 0, 160 }));
+  // Nothing fits: the most nearly square.
+  EXPECT_EQ(layout(9000, 9000, 4, 8192), (std::vector<int>{ 2, 2, 0, 18000 }));
+  EXPECT_EQ(layout(5, 5, 1, 8192), (std::vector<int>{ 1, 1, 0, 5 }));
+}
+
 TEST(TransportVolume, DiffusionOnTilesIsTheSolveOnEveryTexel)
 {
   // The diffusion draws only the coarse tiles that hold a medium; the texels it leaves
@@ -1106,6 +1131,145 @@ TEST(TransportVolume, DiffusionOnTilesIsTheSolveOnEveryTexel)
     worst, diffused);
   EXPECT_GT(diffused, 0.01) << "the scene shows no multiple scattering: nothing is compared";
   EXPECT_EQ(worst, 0.0) << "the tiles change the multiple scattering";
+}
+
+TEST(TransportVolume, DiffusionAtlasHoldsTheJacobiSolveAndTheGatherReadsItTrilinearly)
+{
+  // The diffusion draws its coarse grid as a 2D atlas of the layers
+  // (scatterer_transport_atlas.glsl), read back here through the C++ layout
+  // (DownloadAtlas). The ball over the plate, its 12^3 coarse grid 3 x 4 layers:
+  // - the last Jacobi iteration is one Jacobi step (scatterer_transport_diffuse.glsl),
+  //   computed here, from the iteration before with the source and the medium read back:
+  //   every neighbour, those in the layers before and after included, read from its own
+  //   tile;
+  // - the light the diffusion adds to a fine texel (the received light with multiple
+  //   scattering less that without) is the fluence interpolated trilinearly at the texel,
+  //   clamped to the grid's edges, as a 3D texture would be read.
+  const int n = LitBallOverPlate::kSize;
+  LitBallOverPlate lit(1.0, 0.3);
+  TransportScene& scene = lit.Scene;
+  vtkScattererTransportVolume::DiffusionReadBack coarse;
+  const auto with = scene.RenderAndRead(
+    [&](vtkScattererTransportVolume* transport, vtkOpenGLRenderWindow* gl)
+    {
+      coarse = transport->ReadDiffusion(gl);
+      return transport->ReadLight(gl);
+    });
+  scene.Mapper->SetMultipleScattering(0.0);
+  const auto without = scene.ReceivedLight();
+  const int* d = coarse.Dims;
+  const size_t texels = static_cast<size_t>(d[0]) * d[1] * d[2];
+  ASSERT_GT(texels, 0u);
+  ASSERT_EQ(coarse.Medium.size(), 4 * texels);
+  ASSERT_EQ(coarse.Source.size(), 4 * texels);
+  ASSERT_EQ(coarse.Before.size(), 4 * texels);
+  ASSERT_EQ(coarse.Fluence.size(), 4 * texels);
+  ASSERT_EQ(with.size(), static_cast<size_t>(3 * n * n * n));
+  ASSERT_EQ(without.size(), with.size());
+  auto index = [&](int x, int y, int z)
+  {
+    return static_cast<size_t>(x) + d[0] * (static_cast<size_t>(y) + d[1] * static_cast<size_t>(z));
+  };
+
+  // One Jacobi step: phi = (S + D sum_a (phi(x + e_a) + phi(x - e_a)) / h_a^2)
+  //                        / (2 D sum_a 1 / h_a^2 + sigma_a),  0 where there is no medium.
+  double worstStep = 0.0, largest = 0.0, fromLayers = 0.0;
+  for (int z = 0; z < d[2]; ++z)
+  {
+    for (int y = 0; y < d[1]; ++y)
+    {
+      for (int x = 0; x < d[0]; ++x)
+      {
+        const size_t i = index(x, y, z);
+        const float sigma = coarse.Medium[4 * i + 3];
+        for (int ch = 0; ch < 3; ++ch)
+        {
+          double expected = 0.0;
+          if (sigma > 1.0e-6f)
+          {
+            auto before = [&](int dx, int dy, int dz)
+            {
+              const int p[3] = { x + dx, y + dy, z + dz };
+              for (int a = 0; a < 3; ++a)
+              {
+                if (p[a] < 0 || p[a] >= d[a])
+                {
+                  return 0.0;
+                }
+              }
+              return static_cast<double>(coarse.Before[4 * index(p[0], p[1], p[2]) + ch]);
+            };
+            const double D = 1.0 / (3.0 * sigma);
+            double inv2[3], sum = 0.0;
+            for (int a = 0; a < 3; ++a)
+            {
+              inv2[a] = 1.0 / (static_cast<double>(coarse.H[a]) * coarse.H[a]);
+              sum += inv2[a];
+            }
+            const double layers = (before(0, 0, 1) + before(0, 0, -1)) * inv2[2];
+            const double neighbours = (before(1, 0, 0) + before(-1, 0, 0)) * inv2[0] +
+              (before(0, 1, 0) + before(0, -1, 0)) * inv2[1] + layers;
+            const double sigmaA = sigma * (1.0 - coarse.Medium[4 * i + ch]);
+            expected = (coarse.Source[4 * i + ch] + D * neighbours) / (2.0 * D * sum + sigmaA);
+            fromLayers = std::max(fromLayers, D * layers / (2.0 * D * sum + sigmaA));
+          }
+          const double got = coarse.Fluence[4 * i + ch];
+          worstStep = std::max(worstStep, std::abs(got - expected) / (std::abs(expected) + 1.0e-4));
+          largest = std::max(largest, expected);
+        }
+      }
+    }
+  }
+
+  // The fluence a fine texel j reads: coarse position c = (j - ToGrid - (Block - 1) / 2) /
+  // Block (texel centres at integers), clamped to the grid, trilinear.
+  double worstRead = 0.0, added = 0.0;
+  for (int k = 0; k < n; ++k)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        const int fine[3] = { i, j, k };
+        int lo[3], hi[3];
+        double f[3];
+        for (int a = 0; a < 3; ++a)
+        {
+          const double c = std::min(
+            std::max((fine[a] - coarse.ToGrid[a] - 0.5 * (coarse.Block - 1)) / coarse.Block, 0.0),
+            d[a] - 1.0);
+          lo[a] = static_cast<int>(std::floor(c));
+          hi[a] = std::min(lo[a] + 1, d[a] - 1);
+          f[a] = c - lo[a];
+        }
+        const size_t v = 3 * (static_cast<size_t>(i) + n * (static_cast<size_t>(j) + n * k));
+        for (int ch = 0; ch < 3; ++ch)
+        {
+          double expected = 0.0;
+          for (int corner = 0; corner < 8; ++corner)
+          {
+            const int p[3] = { corner & 1 ? hi[0] : lo[0], corner & 2 ? hi[1] : lo[1],
+              corner & 4 ? hi[2] : lo[2] };
+            const double w = (corner & 1 ? f[0] : 1 - f[0]) * (corner & 2 ? f[1] : 1 - f[1]) *
+              (corner & 4 ? f[2] : 1 - f[2]);
+            expected += w * coarse.Fluence[4 * index(p[0], p[1], p[2]) + ch];
+          }
+          const double got = static_cast<double>(with[v + ch]) - without[v + ch];
+          worstRead = std::max(worstRead, std::abs(got - expected));
+          added = std::max(added, got);
+        }
+      }
+    }
+  }
+  std::printf("atlas: coarse %dx%dx%d; Jacobi step worst %g (relative), fluence up to %g, "
+              "%g of it from the layers before and after; trilinear read worst %g, the "
+              "diffusion adds up to %g\n",
+    d[0], d[1], d[2], worstStep, largest, fromLayers, worstRead, added);
+  EXPECT_GT(fromLayers, 0.05 * largest)
+    << "little fluence comes from the neighbouring layers: they are hardly checked";
+  EXPECT_GT(added, 0.01) << "the scene shows no multiple scattering: nothing is compared";
+  EXPECT_LT(worstStep, 2.0e-3) << "the last iteration is not a Jacobi step of the one before";
+  EXPECT_LT(worstRead, 2.0e-3) << "the gather does not read the fluence trilinearly";
 }
 
 TEST(TransportVolume, ThickTexelHoldsTheMeanOfTheLightEnteringAndLeavingIt)
