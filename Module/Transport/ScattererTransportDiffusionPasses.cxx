@@ -52,6 +52,9 @@ vtkTextureObject* Diffuse(const TransportPass& pass, const CoarseUniforms& u, in
   program->SetUniformi("st_atlasColumns", u.AtlasColumns);
   ScopedSampler medium(program, "st_coarseMedium", textures.CoarseMedium);
   ScopedSampler source(program, "st_coarseSource", textures.CoarseSource);
+  // rgb alone: alpha keeps the occlusion the atlases start with (pass 0d).
+  vtkOpenGLState* state = pass.Window->GetState();
+  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
   int current = 0;
   for (int i = 0; i < iterations; ++i)
   {
@@ -63,6 +66,7 @@ vtkTextureObject* Diffuse(const TransportPass& pass, const CoarseUniforms& u, in
     current = 1 - current;
     pass.Progress.StepDone();
   }
+  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   return textures.Fluence[1 - current];
 }
 
@@ -96,7 +100,6 @@ bool SolveMultipleScattering(
 ScopedScatteredLight::ScopedScatteredLight(
   vtkShaderProgram* program, const TransportPass& pass, vtkTextureObject* fluence)
   : Fluence(program, "st_fluence", fluence)
-  , Occlusion(program, "st_occlusion", pass.Textures.CoarseOcclusion)
 {
   const CoarseGrid coarse =
     CoarseGrid::Over(pass.Grid, pass.In.Downsample, pass.In.StillDownsample);

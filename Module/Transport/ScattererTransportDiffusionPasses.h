@@ -52,7 +52,6 @@ public:
 
 private:
   ScopedSampler Fluence;
-  ScopedSampler Occlusion;
 };
 }
 

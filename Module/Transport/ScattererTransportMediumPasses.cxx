@@ -114,6 +114,25 @@ void DrawCoarseMedium(const TransportPass& pass, const CoarseGrid& coarse)
   DrawLayers(pass.Framebuffer, pass.Programs.Coarsen.get(), program,
     { pass.Textures.CoarseMedium, pass.Textures.CoarseOcclusion }, coarse.Dims[2]);
 }
+
+// Pass 0d: both fluence atlases start as no light, the occlusion in alpha.
+void DrawFluenceStart(const TransportPass& pass, const CoarseGrid& coarse, const int atlas[2])
+{
+  const CoarseUniforms u(pass.Grid, coarse);
+  vtkOpenGLQuadHelper* quad = pass.Programs.FluenceStart.get();
+  vtkShaderProgram* program = UseProgram(pass.Window, quad);
+  program->SetUniform3f("st_coarseDims", u.Dims);
+  program->SetUniformi("st_atlasColumns", u.AtlasColumns);
+  ScopedSampler occlusion(program, "st_occlusion", pass.Textures.CoarseOcclusion);
+  pass.Window->GetState()->vtkglViewport(0, 0, atlas[0], atlas[1]);
+  for (vtkTextureObject* fluence : pass.Textures.Fluence)
+  {
+    Attach2D(0, fluence);
+    pass.Framebuffer->ActivateDrawBuffers(1);
+    quad->Render();
+  }
+  DetachAll(pass.Framebuffer);
+}
 }
 
 bool BuildMediumTextures(const TransportPass& pass, std::string& why)
@@ -130,8 +149,8 @@ bool BuildMediumTextures(const TransportPass& pass, std::string& why)
   DrawFineMedium(pass, coarse);
   pass.Textures.LayerGathers = CountLayerGathers(pass);
   DrawCoarseMedium(pass, coarse);
-  pass.Textures.Tiles.Update(pass.Window, pass.Framebuffer, pass.Textures.CoarseMedium,
-    { pass.Textures.Fluence[0], pass.Textures.Fluence[1] }, pass.In.DiffuseOnTiles);
+  DrawFluenceStart(pass, coarse, atlas);
+  pass.Textures.Tiles.Update(pass.Textures.CoarseMedium, pass.In.DiffuseOnTiles);
   pass.Progress.StepDone();
   return true;
 }

@@ -22,6 +22,7 @@
 #include "scatterer_transport_common.h"
 #include "scatterer_transport_count.h"
 #include "scatterer_transport_diffuse.h"
+#include "scatterer_transport_fluence_start.h"
 #include "scatterer_transport_gather.h"
 #include "scatterer_transport_layers_gs.h"
 #include "scatterer_transport_layers_vs.h"
@@ -114,6 +115,10 @@ bool TransportPrograms::Create(
       scatterer_transport_gather, variant + "#define ST_GATHER " + std::to_string(g) + "\n"));
   }
   this->Count = quad(WithCommon(scatterer_transport_count, variant));
+  // A 2D target: VTK's full-screen quad.
+  const std::string fluenceStart = WithCommon(scatterer_transport_fluence_start, "");
+  this->FluenceStart = std::unique_ptr<vtkOpenGLQuadHelper>(
+    new vtkOpenGLQuadHelper(window, nullptr, fluenceStart.c_str(), ""));
   // The diffusion's passes draw the coarse texels that hold a medium
   // (ScattererTransportTiles.h) into the coarse grid's atlas: 2D targets, no layers.
   const std::string tilesVertex = WithCommon(scatterer_transport_tiles_vs, "");
@@ -139,9 +144,9 @@ bool TransportPrograms::Create(
   return true;
 }
 
-std::array<std::unique_ptr<vtkOpenGLQuadHelper>*, 9> TransportPrograms::All()
+std::array<std::unique_ptr<vtkOpenGLQuadHelper>*, 10> TransportPrograms::All()
 {
-  return { &this->Medium, &this->Coarsen, &this->Count, &this->Arrive,
+  return { &this->Medium, &this->Coarsen, &this->Count, &this->FluenceStart, &this->Arrive,
     &this->Gather[GatherArriving], &this->Gather[GatherTemplates],
     &this->Gather[GatherAcrossMaterials], &this->Source, &this->Diffuse };
 }

@@ -38,7 +38,9 @@ struct TransportPrograms
   std::unique_ptr<vtkOpenGLQuadHelper> Medium;  ///< pass 0a: what no light changes, fine grid
   std::unique_ptr<vtkOpenGLQuadHelper> Coarsen; ///< pass 0b: medium and occlusion, coarse grid
   std::unique_ptr<vtkOpenGLQuadHelper> Count;   ///< pass 0c: which gather each layer needs
-  std::unique_ptr<vtkOpenGLQuadHelper> Arrive;  ///< pass 2a: a light's arriving light
+  /// pass 0d: the fluence atlases' start, the occlusion in alpha
+  std::unique_ptr<vtkOpenGLQuadHelper> FluenceStart;
+  std::unique_ptr<vtkOpenGLQuadHelper> Arrive; ///< pass 2a: a light's arriving light
   /// passes 2b and 4, after 3a and 3b: template in-scattering plus the multiply scattered
   /// and ambient light, the light each texel receives, per GatherVariant
   std::unique_ptr<vtkOpenGLQuadHelper> Gather[GatherVariants];
@@ -92,7 +94,7 @@ struct TransportPrograms
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:
-  std::array<std::unique_ptr<vtkOpenGLQuadHelper>*, 9> All();
+  std::array<std::unique_ptr<vtkOpenGLQuadHelper>*, 10> All();
   std::unique_ptr<vtkOpenGLQuadHelper> Sweeps[kSweepKinds]; ///< pass 1, per kind, when first used
   std::unique_ptr<vtkOpenGLQuadHelper> Lines;               ///< SweepLines' first draw
   std::unique_ptr<vtkOpenGLQuadHelper> LineMeans[4];        ///< its second, per entering x arriving

@@ -80,8 +80,7 @@ std::vector<TexelRect> CoverTexels(
   return rects;
 }
 
-void CoarseTiles::Update(vtkOpenGLRenderWindow* window, vtkOpenGLFramebufferObject* framebuffer,
-  vtkTextureObject* coarseMedium, std::initializer_list<vtkTextureObject*> fluence, bool onTiles)
+void CoarseTiles::Update(vtkTextureObject* coarseMedium, bool onTiles)
 {
   const int dims[3] = { static_cast<int>(coarseMedium->GetWidth()),
     static_cast<int>(coarseMedium->GetHeight()), static_cast<int>(coarseMedium->GetDepth()) };
@@ -125,19 +124,6 @@ void CoarseTiles::Update(vtkOpenGLRenderWindow* window, vtkOpenGLFramebufferObje
   {
     this->Corners->Upload(corners, vtkOpenGLBufferObject::ArrayBuffer);
   }
-
-  // The texels the draws leave out read 0, what the Jacobi pass writes where there is no
-  // medium.
-  vtkOpenGLState* state = window->GetState();
-  state->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-  for (vtkTextureObject* atlas : fluence)
-  {
-    Attach2D(0, atlas);
-    framebuffer->ActivateDrawBuffers(1);
-    state->vtkglViewport(0, 0, atlas->GetWidth(), atlas->GetHeight());
-    state->vtkglClear(GL_COLOR_BUFFER_BIT);
-  }
-  DetachAll(framebuffer);
 }
 
 size_t CoarseTiles::GetGPUBytes() const

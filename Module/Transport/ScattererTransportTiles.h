@@ -56,10 +56,9 @@ struct CoarseTiles
   int Count = 0; ///< rectangles
 
   /** The rectangles around the texels of @p coarseMedium (RGBA: albedo, sigma_t) whose
-   * sigma_t is not 0 (@p onTiles; else whole layers), uploaded; and the @p fluence
-   * atlases cleared to 0 (what is left out is read as such). */
-  void Update(vtkOpenGLRenderWindow* window, vtkOpenGLFramebufferObject* framebuffer,
-    vtkTextureObject* coarseMedium, std::initializer_list<vtkTextureObject*> fluence, bool onTiles);
+   * sigma_t is not 0 (@p onTiles; else whole layers), uploaded. The fluence atlases
+   * start at 0 where they leave out (scatterer_transport_fluence_start.glsl). */
+  void Update(vtkTextureObject* coarseMedium, bool onTiles);
 
   /** Bytes the rectangles take on the GPU. */
   size_t GetGPUBytes() const;

@@ -10,8 +10,10 @@
 // own adding to it by blending.
 //============================================================================
 //VTK::Transport::Atlas
-uniform sampler2D st_fluence;      // coarse grid's atlas, rgb (unused when st_strength is 0)
-uniform sampler3D st_occlusion;    // coarse grid: the ambient light's transmittance (pass 0b)
+// The coarse grid's atlas: rgb the fluence (unused when st_strength is 0), alpha the
+// ambient light's transmittance (pass 0b, copied in by pass 0d,
+// scatterer_transport_fluence_start.glsl): both in one read.
+uniform sampler2D st_fluence;
 uniform vec3 st_ambient;
 uniform vec3 st_coarseToGrid;
 uniform float st_block;
@@ -23,7 +25,7 @@ vec3 st_scatteredAndAmbient(vec3 j)
   // Coarse texel c's centre is at fine position c * b + st_coarseToGrid + (b - 1) / 2.
   vec3 c = (j - st_coarseToGrid - vec3(0.5 * (st_block - 1.0))) / st_block;
   vec3 coarse = (c + vec3(0.5)) / st_coarseDims;
-  vec3 scattered =
-    st_strength > 0.0 ? st_strength * st_atlasLinear(st_fluence, coarse).rgb : vec3(0.0);
-  return scattered + st_ambient * texture(st_occlusion, coarse).r;
+  vec4 fluence = st_atlasLinear(st_fluence, coarse);
+  vec3 scattered = st_strength > 0.0 ? st_strength * fluence.rgb : vec3(0.0);
+  return scattered + st_ambient * fluence.a;
 }

@@ -357,6 +357,7 @@ vtkScattererTransportVolume::DiffusionReadBack vtkScattererTransportVolume::Read
   }
   back.Block = coarse.Block;
   back.Medium = scatterer_gpu::DownloadTexture3D(t.CoarseMedium, 4);
+  back.Occlusion = scatterer_gpu::DownloadTexture3D(t.CoarseOcclusion, 1);
   back.Source = scatterer_gpu::DownloadAtlas(t.CoarseSource, coarse.Dims, coarse.AtlasColumns);
   back.Fluence = scatterer_gpu::DownloadAtlas(s.Fluence, coarse.Dims, coarse.AtlasColumns);
   back.Before = scatterer_gpu::DownloadAtlas(

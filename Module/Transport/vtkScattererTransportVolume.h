@@ -263,11 +263,14 @@ public:
     int ToGrid[3] = { 0, 0,
       0 }; ///< coarse texel c covers fine texels Block c + ToGrid + [0, Block)
     int Block = 1;
-    float H[3] = { 0, 0, 0 };   ///< coarse texel size along each axis, world units
-    std::vector<float> Medium;  ///< albedo, sigma_t
-    std::vector<float> Source;  ///< the light scattered once
-    std::vector<float> Before;  ///< the fluence of the Jacobi iteration before the last
-    std::vector<float> Fluence; ///< the fluence of the last iteration, as the gather read it
+    float H[3] = { 0, 0, 0 };     ///< coarse texel size along each axis, world units
+    std::vector<float> Medium;    ///< albedo, sigma_t
+    std::vector<float> Occlusion; ///< one value a texel: the ambient light's transmittance
+    std::vector<float> Source;    ///< the light scattered once
+    /// the fluence of the Jacobi iteration before the last (rgb; alpha the occlusion)
+    std::vector<float> Before;
+    /// the fluence of the last iteration, as the gather read it (rgb; alpha the occlusion)
+    std::vector<float> Fluence;
   };
 
   /** For tests: see DiffusionReadBack; arrays empty if no build solved a diffusion. */

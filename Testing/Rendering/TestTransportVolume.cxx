@@ -1157,6 +1157,11 @@ TEST(TransportVolume, DiffusionAtlasHoldsTheJacobiSolveAndTheGatherReadsItTrilin
     });
   scene.Mapper->SetMultipleScattering(0.0);
   const auto without = scene.ReceivedLight();
+  // VTK's ambient term: the light the lights' ambient colour adds is that colour times the
+  // occlusion, read in the same atlas read (its alpha).
+  scene.Light->SetAmbientColor(1.0, 1.0, 1.0);
+  scene.Property->SetAmbient(0.5);
+  const auto ambient = scene.ReceivedLight();
   const int* d = coarse.Dims;
   const size_t texels = static_cast<size_t>(d[0]) * d[1] * d[2];
   ASSERT_GT(texels, 0u);
@@ -1164,6 +1169,19 @@ TEST(TransportVolume, DiffusionAtlasHoldsTheJacobiSolveAndTheGatherReadsItTrilin
   ASSERT_EQ(coarse.Source.size(), 4 * texels);
   ASSERT_EQ(coarse.Before.size(), 4 * texels);
   ASSERT_EQ(coarse.Fluence.size(), 4 * texels);
+  ASSERT_EQ(coarse.Occlusion.size(), texels);
+  ASSERT_EQ(ambient.size(), with.size());
+  // Both atlases hold the occlusion in alpha, which the Jacobi passes leave as it is.
+  double worstAlpha = 0.0, leastOcclusion = 1.0;
+  for (size_t i = 0; i < texels; ++i)
+  {
+    for (const auto* atlas : { &coarse.Before, &coarse.Fluence })
+    {
+      worstAlpha = std::max(
+        worstAlpha, std::abs(static_cast<double>((*atlas)[4 * i + 3]) - coarse.Occlusion[i]));
+    }
+    leastOcclusion = std::min(leastOcclusion, static_cast<double>(coarse.Occlusion[i]));
+  }
   ASSERT_EQ(with.size(), static_cast<size_t>(3 * n * n * n));
   ASSERT_EQ(without.size(), with.size());
   auto index = [&](int x, int y, int z)
@@ -1224,6 +1242,7 @@ TEST(TransportVolume, DiffusionAtlasHoldsTheJacobiSolveAndTheGatherReadsItTrilin
   // The fluence a fine texel j reads: coarse position c = (j - ToGrid - (Block - 1) / 2) /
   // Block (texel centres at integers), clamped to the grid, trilinear.
   double worstRead = 0.0, added = 0.0;
+  std::vector<double> occlusionRead, ambientAdded; // per fine texel, channel 0
   for (int k = 0; k < n; ++k)
   {
     for (int j = 0; j < n; ++j)
@@ -1258,9 +1277,40 @@ TEST(TransportVolume, DiffusionAtlasHoldsTheJacobiSolveAndTheGatherReadsItTrilin
           worstRead = std::max(worstRead, std::abs(got - expected));
           added = std::max(added, got);
         }
+        double occlusion = 0.0;
+        for (int corner = 0; corner < 8; ++corner)
+        {
+          const int p[3] = { corner & 1 ? hi[0] : lo[0], corner & 2 ? hi[1] : lo[1],
+            corner & 4 ? hi[2] : lo[2] };
+          occlusion += (corner & 1 ? f[0] : 1 - f[0]) * (corner & 2 ? f[1] : 1 - f[1]) *
+            (corner & 4 ? f[2] : 1 - f[2]) * coarse.Occlusion[index(p[0], p[1], p[2])];
+        }
+        occlusionRead.push_back(occlusion);
+        ambientAdded.push_back(static_cast<double>(ambient[v]) - without[v]);
       }
     }
   }
+  // The ambient colour's share: added = k occlusion, k fitted (least squares).
+  double kn = 0.0, kd = 0.0;
+  for (size_t v = 0; v < occlusionRead.size(); ++v)
+  {
+    kn += occlusionRead[v] * ambientAdded[v];
+    kd += occlusionRead[v] * occlusionRead[v];
+  }
+  const double k = kd > 0.0 ? kn / kd : 0.0;
+  double worstAmbient = 0.0;
+  for (size_t v = 0; v < occlusionRead.size(); ++v)
+  {
+    worstAmbient = std::max(worstAmbient, std::abs(ambientAdded[v] - k * occlusionRead[v]));
+  }
+  std::printf("atlas: occlusion in alpha worst %g (occlusion down to %g); ambient added %g x "
+              "the occlusion read, worst %g\n",
+    worstAlpha, leastOcclusion, k, worstAmbient);
+  EXPECT_LT(worstAlpha, 1.0e-3) << "an atlas's alpha is not the occlusion";
+  EXPECT_LT(leastOcclusion, 0.9) << "nothing occludes the ambient light: nothing is checked";
+  EXPECT_GT(k, 0.05) << "the ambient colour adds no light: nothing is compared";
+  EXPECT_LT(worstAmbient, 2.0e-3 * std::max(1.0, k))
+    << "the gather does not read the occlusion trilinearly";
   std::printf("atlas: coarse %dx%dx%d; Jacobi step worst %g (relative), fluence up to %g, "
               "%g of it from the layers before and after; trilinear read worst %g, the "
               "diffusion adds up to %g\n",
