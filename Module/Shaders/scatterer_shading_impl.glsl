@@ -6,9 +6,11 @@
     // next group starts, and the samples between take the light between the two reads
     // geometrically, L_k = L_0 (L_n / L_0)^(k/n): the optical depth interpolated
     // linearly, exact where the light falls off as Beer-Lambert's exp(-tau) along the
-    // ray (docs/model.md, "Fewer light reads").
+    // ray (docs/model.md, "Fewer light reads"). The reads are compressed
+    // (st_compressHighlights) as they are taken, once a group rather than per sample.
     vec3 st_lightStart = st_lightEnd;
-    st_lightEnd = st_transportRead(g_dataPos + float(@LIGHT_STRIDE@) * g_dirStep);
+    st_lightEnd =
+      st_compressHighlights(st_transportRead(g_dataPos + float(@LIGHT_STRIDE@) * g_dirStep));
     vec3 st_lightStep =
       st_strideRoot(max(st_lightEnd, st_lightFloor) / max(st_lightStart, st_lightFloor));
     vec3 st_light = max(st_lightStart, st_lightFloor);
@@ -110,7 +112,7 @@
         // VTK's ambient term occluded like the light), between the group's reads or
         // read here.
 //ST::IF GROUPED
-        st_F = st_compressHighlights(st_light);
+        st_F = st_light;
 //ST::ELSE
         st_F = st_compressHighlights(st_transportRead(g_dataPos));
 //ST::ENDIF

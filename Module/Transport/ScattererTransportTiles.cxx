@@ -1,8 +1,6 @@
 #include "ScattererTransportTiles.h"
 
 #include "ScattererTransportFramebuffer.h"
-#include "ScattererTransportPrograms.h"
-#include "ScattererTransportTextures.h"
 
 #include "vtkNew.h"
 #include "vtkOpenGLBufferObject.h"

@@ -193,6 +193,10 @@ TEST(ShaderComposer, SamplesThatShareALightReadCarryTheRayLoopsOwnStep)
   };
   EXPECT_EQ(count("texture3D(in_volume[0], g_dataPos)"), 4);
   EXPECT_EQ(count("st_transportRead("), 1);
+  // The group's reads are compressed as they are taken (the samples between interpolate
+  // the compressed light), so no sample compresses again.
+  EXPECT_EQ(count("st_compressHighlights(st_transportRead("), 1);
+  EXPECT_EQ(count("st_compressHighlights("), 1);
   EXPECT_EQ(count("g_dataPos += g_dirStep;"), 3);
   for (const char* tag :
     { "//VTK::Terminate::Impl", "//VTK::Base::Impl", "//VTK::Cropping::Impl",
@@ -203,7 +207,8 @@ TEST(ShaderComposer, SamplesThatShareALightReadCarryTheRayLoopsOwnStep)
   }
   EXPECT_EQ(count("{"), count("}"));
   EXPECT_FALSE(Has(impl, "@"));
-  EXPECT_TRUE(Has(scatterer_shader::ShadingInitialization(f), "st_lightEnd = st_transportRead"));
+  EXPECT_TRUE(Has(scatterer_shader::ShadingInitialization(f),
+    "st_lightEnd = st_compressHighlights(st_transportRead"));
   EXPECT_EQ(
     f.Describe(), "transport lights=1 materials=1 shadow thin bleed boundary light-stride=4");
 
