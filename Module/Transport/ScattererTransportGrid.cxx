@@ -259,16 +259,33 @@ SweepPlan PlanSweep(const TransportGrid& grid, const vtkScattererTransportVolume
   return plan;
 }
 
-LineRange LinesOf(const TransportGrid& grid, const SweepPlan& plan,
-  const vtkScattererTransportVolume::Light& light, int fromStep, int toStep)
+LightStep StepTowardLight(
+  const TransportGrid& grid, const SweepPlan& plan, const vtkScattererTransportVolume::Light& light)
 {
-  // The step toward the light as st_stepTowardLight takes it (sweep texels).
   const double w[3] = { light.Toward[0], light.Toward[1], light.Toward[2] };
   double g[3];
   Multiply3(grid.WorldToGrid, w, g);
   const double ds[3] = { g[plan.Row], g[plan.Column], g[plan.Axis] };
   const double along = std::max(std::abs(ds[2]), std::hypot(ds[0], ds[1]) / 4.0);
-  const double sign = ds[2] > 0.0 ? 1.0 : (ds[2] < 0.0 ? -1.0 : 0.0);
+  LightStep step;
+  for (int i = 0; i < 2; ++i)
+  {
+    step.Sweep[i] = ds[i] / std::max(along, 1.0e-20);
+  }
+  step.Sweep[2] = ds[2] > 0.0 ? 1.0 : (ds[2] < 0.0 ? -1.0 : 0.0);
+  step.Grid[plan.Row] = step.Sweep[0];
+  step.Grid[plan.Column] = step.Sweep[1];
+  step.Grid[plan.Axis] = step.Sweep[2];
+  double world[3];
+  Multiply3(grid.GridToWorld, step.Grid, world);
+  step.Length = std::sqrt(world[0] * world[0] + world[1] * world[1] + world[2] * world[2]);
+  return step;
+}
+
+LineRange LinesOf(const TransportGrid& grid, const SweepPlan& plan,
+  const vtkScattererTransportVolume::Light& light, int fromStep, int toStep)
+{
+  const LightStep step = StepTowardLight(grid, plan, light);
   // The global indices of the steps' first and last slices (away from the light).
   const int first = plan.Runs.empty() ? 0 : plan.Runs.front().first;
   const int away = plan.Runs.empty() || plan.Runs.front().second >= first ? 1 : -1;
@@ -278,7 +295,7 @@ LineRange LinesOf(const TransportGrid& grid, const SweepPlan& plan,
   LineRange range;
   for (int i = 0; i < 2; ++i)
   {
-    const double a = along > 0.0 ? ds[i] / along * sign : 0.0;
+    const double a = step.Sweep[i] * step.Sweep[2]; // the sideways step per slice
     // round(z a) is monotonic in z: its extremes are at the first and last slices.
     const double r0 = std::floor(z0 * a + 0.5), r1 = std::floor(z1 * a + 0.5);
     const int lo = static_cast<int>(-std::max(r0, r1)) - 1;

@@ -121,6 +121,24 @@ struct SweepPlan
  * directional light), or away from its own slice on both sides (a positional light). */
 SweepPlan PlanSweep(const TransportGrid& grid, const vtkScattererTransportVolume::Light& light);
 
+/** One step of a directional light's sweep toward it: Sweep in sweep texels (rows,
+ * columns, slices), its slice component +-1 and its sideways part at most 4 texels (a
+ * light nearly in a slice's plane would shift sideways without bound); Grid the same
+ * in grid texels; Length its length in the world. A positional light's step changes
+ * from texel to texel, and its sweep takes it there (st_stepTowardLight in
+ * scatterer_transport_sweep_common.glsl, the same rule); a directional light's is taken
+ * here once, and the sweeps read it as uniforms (st_stepSweep, st_stepGrid,
+ * st_stepLength), so that its lines, their mean and LinesOf share one value and no
+ * fragment computes it again. */
+struct LightStep
+{
+  double Sweep[3] = { 0, 0, 0 };
+  double Grid[3] = { 0, 0, 0 };
+  double Length = 0;
+};
+LightStep StepTowardLight(const TransportGrid& grid, const SweepPlan& plan,
+  const vtkScattererTransportVolume::Light& light);
+
 /** The lines of directional @p light swept by @p plan through @p grid
  * (scatterer_transport_lines.glsl): line k holds texel k + round(z a) of slice z (sweep
  * rows and columns, z the global slice index, a the sideways step per slice). Lo is the

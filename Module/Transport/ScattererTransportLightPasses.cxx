@@ -43,8 +43,21 @@ public:
     const float sweepDimsF[3] = { static_cast<float>(sweepDims[0]),
       static_cast<float>(sweepDims[1]), static_cast<float>(sweepDims[2]) };
     program->SetUniform3f("st_sweepDims", sweepDimsF);
-    program->SetUniform3f("st_lightToward", light.Toward);
-    program->SetUniform3f("st_lightPosition", light.Position);
+    if (light.Positional)
+    {
+      program->SetUniform3f("st_lightPosition", light.Position);
+    }
+    else
+    {
+      const LightStep step = StepTowardLight(pass.Grid, plan, light);
+      const float stepSweep[3] = { static_cast<float>(step.Sweep[0]),
+        static_cast<float>(step.Sweep[1]), static_cast<float>(step.Sweep[2]) };
+      const float stepGrid[3] = { static_cast<float>(step.Grid[0]),
+        static_cast<float>(step.Grid[1]), static_cast<float>(step.Grid[2]) };
+      program->SetUniform3f("st_stepSweep", stepSweep);
+      program->SetUniform3f("st_stepGrid", stepGrid);
+      program->SetUniformf("st_stepLength", static_cast<float>(step.Length));
+    }
     program->SetUniformi("st_substeps", std::max(1, in.Downsample));
     program->SetUniformf("st_sliceOrigin", static_cast<float>(pass.Grid.FirstIndex[plan.Axis]));
     program->SetUniformf("st_firstSlice", static_cast<float>(plan.Runs.front().first));

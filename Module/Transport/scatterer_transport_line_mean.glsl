@@ -20,7 +20,6 @@
 in vec2 texCoord;
 uniform sampler3D st_lines;      // per texel (T, mean factor), sweep order; its border reads 1
 flat in float st_layer;          // this layer (scatterer_transport_layers_gs.glsl)
-uniform vec3 st_lightToward;     // unit vector toward the light (world)
 uniform vec3 st_lightColor;      // ST_LINE_MEAN_ARRIVING: E_l
 uniform float st_firstSlice;     // the sweep's first slice (nearest the light): T = 1
 
@@ -31,11 +30,8 @@ float st_lineMean(vec3 js)
   {
     return 1.0;
   }
-  vec3 stepSweep, stepGrid;
-  float len;
-  st_stepTowardLight(st_lightToward, stepSweep, stepGrid, len);
-  vec3 qs = js + stepSweep;
-  vec2 eq = st_sliceShift(qs.z, stepSweep.xy * stepSweep.z);
+  vec3 qs = js + st_stepSweep;
+  vec2 eq = st_sliceShift(qs.z, st_stepSweep.xy * st_stepSweep.z);
   float Tq = texture(st_lines, (vec3(qs.xy + eq, qs.z) + vec3(0.5)) / st_sweepDims).r;
   return Tq * texelFetch(st_lines, ivec3(js), 0).g;
 }

@@ -30,7 +30,6 @@
 //VTK::Transport::Sweep
 in vec2 texCoord;
 layout(rg16f) writeonly uniform image3D st_lines; // per texel (T, mean factor), sweep order
-uniform vec3 st_lightToward;    // unit vector toward the light (world)
 uniform vec2 st_lineOrigin;     // the index k of pixel 0 (the draws cover what they need)
 uniform float st_firstSlice;    // the sweep's first slice (nearest the light)
 uniform int st_chunkFirst;      // this draw's slices: st_chunkFirst, ... (in sweep order)
@@ -50,11 +49,8 @@ void main()
   }
   vec2 pixel = floor(gl_FragCoord.xy);
   vec2 k = pixel + st_lineOrigin;
-  vec3 stepSweep, stepGrid;
-  float len;
-  st_stepTowardLight(st_lightToward, stepSweep, stepGrid, len);
-  vec2 a = stepSweep.xy * stepSweep.z;
-  float away = -stepSweep.z; // the slices follow each other away from the light
+  vec2 a = st_stepSweep.xy * st_stepSweep.z;
+  float away = -st_stepSweep.z; // the slices follow each other away from the light
   vec2 start = texelFetch(st_lineStart, ivec2(pixel), 0).rg;
   float T = st_chunkFirst > 0 && start.g == float(st_chunkFirst) ? start.r : 1.0;
   int end = min(st_chunkFirst + st_chunkSlices, int(st_sweepDims.z));
@@ -72,7 +68,7 @@ void main()
     {
       vec3 j = transpose(st_toSweep) * vec3(c, z);
       float tau, tauHalf;
-      st_stepDepth(j, stepGrid, len, tau, tauHalf);
+      st_stepDepth(j, st_stepGrid, st_stepLength, tau, tauHalf);
       T *= st_stepFactors(tau, tauHalf, factor);
     }
     imageStore(st_lines, ivec3(vec3(c, z)), vec4(T, factor, 0.0, 0.0));

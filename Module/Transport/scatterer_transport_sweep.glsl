@@ -64,7 +64,6 @@ in vec2 texCoord;
 uniform sampler2D st_previous;     // the slice swept before this one
 uniform int st_hasPrevious;        // 0: first slice of a sweep, T = 1
 uniform float st_slice;            // this slice's index along the sweep axis
-uniform vec3 st_lightToward;       // directional: unit vector toward the light (world)
 uniform vec3 st_lightPosition;     // positional: world position
 
 // The program comes in one variant per kind of light (ScattererTransportPrograms.cxx):
@@ -80,13 +79,13 @@ void main()
   {
 #if ST_SWEEP_POSITIONAL
     vec4 p = st_texToWorld * vec4(st_gridToTexture(j), 1.0);
-    vec3 toward = st_lightPosition - p.xyz / p.w;
-#else
-    vec3 toward = st_lightToward;
-#endif
     vec3 stepSweep, stepGrid;
     float len;
-    st_stepTowardLight(toward, stepSweep, stepGrid, len);
+    st_stepTowardLight(st_lightPosition - p.xyz / p.w, stepSweep, stepGrid, len);
+#else
+    vec3 stepSweep = st_stepSweep, stepGrid = st_stepGrid;
+    float len = st_stepLength;
+#endif
     vec3 qs = js + stepSweep;
     // Outside the grid the light has crossed no matter: the border reads 1.
 #if ST_SWEEP_POSITIONAL

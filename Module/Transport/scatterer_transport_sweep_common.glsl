@@ -19,9 +19,18 @@ uniform vec3 st_enteringV;
 uniform vec2 st_enteringLo;        // directional: the map's corner on the plane
 uniform float st_enteringSide;     // directional: the map's side (index units)
 
+// A directional light's step toward it, one slice: in sweep texels (z = +-1), in grid
+// texels, and its length in the world; taken once per light on the CPU by the rule
+// below (StepTowardLight, ScattererTransportGrid.h), not by every fragment.
+uniform vec3 st_stepSweep;
+uniform vec3 st_stepGrid;
+uniform float st_stepLength;
+
 // One slice toward the light, in the direction `toward` (world): the step in sweep
 // texels (z = +-1), in grid texels, and its length in the world. A light nearly in a
-// slice's plane would shift sideways without bound: at most 4 texels per step.
+// slice's plane would shift sideways without bound: at most 4 texels per step. A
+// positional light's sweep takes it per texel (its direction changes from texel to
+// texel); StepTowardLight mirrors it for a directional light.
 void st_stepTowardLight(vec3 toward, out vec3 stepSweep, out vec3 stepGrid, out float len)
 {
   vec3 ds = st_toSweep * (st_worldToGrid * toward);
