@@ -5,8 +5,6 @@
 #include "vtkNew.h"
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLFramebufferObject.h"
-#include "vtkOpenGLRenderWindow.h"
-#include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
@@ -146,6 +144,9 @@ void DrawTiles(vtkOpenGLFramebufferObject* framebuffer, vtkShaderProgram* progra
   framebuffer->ActivateDrawBuffers(1);
   if (tiles.Count > 0)
   {
+    const float size[2] = { static_cast<float>(target->GetWidth()),
+      static_cast<float>(target->GetHeight()) };
+    program->SetUniform2f("st_atlasSize", size);
     // The program's attributes, as the quad's arrays bind them, from the corners: a
     // corner's (x, y, z) as ndCoordIn, its (x, y) as texCoordIn.
     vtkNew<vtkOpenGLVertexArrayObject> corners;

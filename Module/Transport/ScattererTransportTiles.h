@@ -14,15 +14,12 @@
 
 #include <cstddef> // for size_t
 #include <functional>
-#include <initializer_list>
 #include <vector>
 
 class vtkOpenGLBufferObject;
 class vtkOpenGLFramebufferObject;
-class vtkOpenGLRenderWindow;
 class vtkShaderProgram;
 class vtkTextureObject;
-class vtkWindow;
 
 namespace scatterer_gpu
 {

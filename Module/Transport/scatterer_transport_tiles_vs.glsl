@@ -13,13 +13,12 @@ in vec4 ndCoordIn;  // the corner: (x, y) in texels, z its layer
 in vec2 texCoordIn; // the corner's (x, y) again (the quad's two attributes are kept)
 out vec2 texCoord;
 flat out float st_layer;
+uniform vec2 st_atlasSize; // the atlas drawn into, texels (DrawTiles sets it)
 
 void main()
 {
   vec2 atlas = vec2(st_atlasTexel(ivec3(0, 0, int(ndCoordIn.z + 0.5)))) + texCoordIn;
-  vec2 size = st_coarseDims.xy *
-    vec2(st_atlasColumns, (int(st_coarseDims.z) + st_atlasColumns - 1) / st_atlasColumns);
-  gl_Position = vec4(2.0 * atlas / size - vec2(1.0), 0.0, 1.0);
+  gl_Position = vec4(2.0 * atlas / st_atlasSize - vec2(1.0), 0.0, 1.0);
   texCoord = texCoordIn / st_coarseDims.xy;
   st_layer = ndCoordIn.z;
 }

@@ -260,8 +260,8 @@ public:
   struct DiffusionReadBack
   {
     int Dims[3] = { 0, 0, 0 };
-    int ToGrid[3] = { 0, 0,
-      0 }; ///< coarse texel c covers fine texels Block c + ToGrid + [0, Block)
+    /// coarse texel c covers fine texels Block c + ToGrid + [0, Block)
+    int ToGrid[3] = { 0, 0, 0 };
     int Block = 1;
     float H[3] = { 0, 0, 0 };     ///< coarse texel size along each axis, world units
     std::vector<float> Medium;    ///< albedo, sigma_t
