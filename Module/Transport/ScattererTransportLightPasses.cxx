@@ -35,6 +35,7 @@ public:
     vtkTextureObject* enteringTexture, const vtkScattererTransportVolume::EnteringDepth* entering)
     : Volume(program, pass.In)
     , Medium(program, "st_medium", pass.Tables.Medium)
+    , Extinction(program, "st_extinction", pass.Tables.Extinction)
     , DepthInFront(program, "st_enteringDepth", enteringTexture)
   {
     const vtkScattererTransportVolume::Inputs& in = pass.In;
@@ -75,6 +76,7 @@ public:
 private:
   ScopedVolume Volume;
   ScopedSampler Medium;
+  ScopedSampler Extinction;
   ScopedSampler DepthInFront;
 };
 

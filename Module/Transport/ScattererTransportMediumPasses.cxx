@@ -110,6 +110,7 @@ void DrawCoarseMedium(const TransportPass& pass, const CoarseGrid& coarse)
   program->SetUniformi("st_subsamples", coarse.Subsamples);
   ScopedVolume volume(program, pass.In);
   ScopedSampler medium(program, "st_medium", pass.Tables.Medium);
+  ScopedSampler extinction(program, "st_extinction", pass.Tables.Extinction);
   pass.Window->GetState()->vtkglViewport(0, 0, coarse.Dims[0], coarse.Dims[1]);
   DrawLayers(pass.Framebuffer, pass.Programs.Coarsen.get(), program,
     { pass.Textures.CoarseMedium, pass.Textures.CoarseOcclusion }, coarse.Dims[2]);

@@ -22,8 +22,18 @@ void TransportTables::Upload(
   // Linear over the scalar, as the ray caster reads its transfer functions.
   this->Medium = NewTransportTexture(window, true, vtkTextureObject::ClampToEdge);
   const int rows = std::max(1, in.MediumRows);
-  this->Medium->Create2DFromRaw(static_cast<unsigned int>(in.Medium.size() / (4 * rows)),
-    static_cast<unsigned int>(rows), 4, VTK_FLOAT, const_cast<float*>(in.Medium.data()));
+  const size_t entries = in.Medium.size() / (4 * rows);
+  this->Medium->Create2DFromRaw(static_cast<unsigned int>(entries), static_cast<unsigned int>(rows),
+    4, VTK_FLOAT, const_cast<float*>(in.Medium.data()));
+  // Row 0's sigma_t alone, as the sweeps read it (st_attenuationAt).
+  std::vector<float> extinction(entries);
+  for (size_t i = 0; i < entries; ++i)
+  {
+    extinction[i] = in.Medium[4 * i + 3];
+  }
+  this->Extinction = NewTransportTexture(window, true, vtkTextureObject::ClampToEdge);
+  this->Extinction->Create1DFromRaw(
+    static_cast<unsigned int>(entries), 1, VTK_FLOAT, extinction.data());
 
   // Nearest: a scalar belongs to one material or none.
   std::vector<float> table(in.MaterialTable);

@@ -27,6 +27,8 @@ struct TransportTables
 {
   /// RGBA32F, one row per medium (MediumRows): albedo rgb and sigma_t over the scalar.
   vtkSmartPointer<vtkTextureObject> Medium;
+  /// R32F 1D: Medium's sigma_t of row 0 alone, which the sweeps read (st_attenuationAt).
+  vtkSmartPointer<vtkTextureObject> Extinction;
   vtkSmartPointer<vtkTextureObject> Materials; ///< R32F: material index over the scalar, -1: none
   vtkSmartPointer<vtkTextureObject>
     Kernel; ///< RGBA32F, materials rows of (photons, centroid): offset, weight

@@ -19,6 +19,7 @@ uniform vec4 st_componentWeights;  // independent components: vtkVolumeProperty'
 uniform vec3 st_voxelStep;         // 2D transfer function: one texel of st_volume
 uniform vec3 st_gradientAspect;    // 2D transfer function: spacing * 2 / mean spacing per axis
 uniform sampler2D st_medium;       // over the normalised scalar: rgb albedo (colour), a sigma_t per world unit
+uniform sampler1D st_extinction;   // st_medium's sigma_t of row 0 alone (st_attenuationAt)
 uniform float st_occlusionScale;  // OcclusionStrength: scales the attenuation along light paths only
 uniform vec3 st_gridDims;
 uniform vec3 st_gridToTex;
@@ -234,9 +235,15 @@ vec4 st_multiMedium(vec3 t, out int dominant, out float scalar)
 // sigma_t = -ln(1 - alpha) / ScalarOpacityUnitDistance, tabulated on the CPU from
 // the transfer functions the scene uses (scatterer/Transport.h). Removed or
 // outside material: none.
+// Is there a medium at texture position t: inside the volume and kept?
+bool st_inMedium(vec3 t)
+{
+  return all(greaterThanEqual(t, vec3(0.0))) && all(lessThanEqual(t, vec3(1.0))) && st_kept(t);
+}
+
 vec4 st_mediumAt(vec3 t)
 {
-  if (any(lessThan(t, vec3(0.0))) || any(greaterThan(t, vec3(1.0))) || !st_kept(t))
+  if (!st_inMedium(t))
   {
     return vec4(0.0);
   }
@@ -293,9 +300,18 @@ vec2 st_materialCoordAt(vec3 t)
 
 // The extinction that attenuates light on its way (the sweep): sigma_t times
 // OcclusionStrength (1: physical; 0: no shadows, the medium still scatters).
+// One scalar without a label map reads sigma_t from st_extinction, a one-channel 1D copy
+// of st_medium's alpha (TransportTables::Upload): the sweeps, most of a rebuild under
+// several lights, read it twice a texel, and a linear read of one channel in 1D is a
+// fraction of the filtering of a 2D RGBA one (on llvmpipe a light kit's sweeps took 2-12 %
+// less time, the same values: docs/rendering.md).
 float st_attenuationAt(vec3 t)
 {
+#if ST_COMPONENT_MODE == ST_ONE_SCALAR && ST_MASK != ST_LABEL_MASK
+  return st_inMedium(t) ? st_occlusionScale * texture(st_extinction, st_scalarAt(t)).r : 0.0;
+#else
   return st_occlusionScale * st_mediumAt(t).a;
+#endif
 }
 
 // Texture coordinate of grid position j in the transmittance texture.
