@@ -230,17 +230,17 @@ vec4 st_multiMedium(vec3 t, out int dominant, out float scalar)
 }
 #endif
 
-// The medium at a texture position: rgb = albedo (the colour transfer function),
-// a = extinction coefficient sigma_t per world unit in VTK's convention
-// sigma_t = -ln(1 - alpha) / ScalarOpacityUnitDistance, tabulated on the CPU from
-// the transfer functions the scene uses (scatterer/Transport.h). Removed or
-// outside material: none.
 // Is there a medium at texture position t: inside the volume and kept?
 bool st_inMedium(vec3 t)
 {
   return all(greaterThanEqual(t, vec3(0.0))) && all(lessThanEqual(t, vec3(1.0))) && st_kept(t);
 }
 
+// The medium at a texture position: rgb = albedo (the colour transfer function),
+// a = extinction coefficient sigma_t per world unit in VTK's convention
+// sigma_t = -ln(1 - alpha) / ScalarOpacityUnitDistance, tabulated on the CPU from
+// the transfer functions the scene uses (scatterer/Transport.h). Removed or
+// outside material: none.
 vec4 st_mediumAt(vec3 t)
 {
   if (!st_inMedium(t))
