@@ -22,7 +22,7 @@ namespace scatterer_gpu
 {
 struct TransportGrid;
 
-/** The table textures, uploaded again for every build. */
+/** The table textures, uploaded again whenever the medium changes (not on a light change). */
 struct TransportTables
 {
   /// RGBA32F, one row per medium (MediumRows): albedo rgb and sigma_t over the scalar.
