@@ -74,8 +74,8 @@ void Attach2D(unsigned int index, vtkTextureObject* texture)
 
 void DetachAll(vtkOpenGLFramebufferObject* framebuffer)
 {
-  // The passes use at most two attachments.
-  for (unsigned int index = 0; index < 2; ++index)
+  // The passes use at most three attachments (pass 0a).
+  for (unsigned int index = 0; index < 3; ++index)
   {
     glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + index, GL_TEXTURE_2D, 0, 0);
   }

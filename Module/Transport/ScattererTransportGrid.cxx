@@ -259,6 +259,14 @@ SweepPlan PlanSweep(const TransportGrid& grid, const vtkScattererTransportVolume
   return plan;
 }
 
+ExtinctionSampling ExtinctionSampling::For(int downsample)
+{
+  ExtinctionSampling sampling;
+  sampling.StepSamples = std::max(1, downsample);
+  sampling.MeanPoints = std::max(2, downsample);
+  return sampling;
+}
+
 LightStep StepTowardLight(
   const TransportGrid& grid, const SweepPlan& plan, const vtkScattererTransportVolume::Light& light)
 {

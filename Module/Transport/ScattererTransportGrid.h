@@ -139,6 +139,21 @@ struct LightStep
 LightStep StepTowardLight(const TransportGrid& grid, const SweepPlan& plan,
   const vtkScattererTransportVolume::Light& light);
 
+/** How a sweep samples the extinction over a step from a texel toward the light
+ * (st_stepDepth, scatterer_transport_sweep_common.glsl), for @p downsample volume voxels
+ * per texel. StepSamples points evenly along the step, one a voxel (max(1, downsample));
+ * those in its near half, inside the texel, give that half's optical depth. The far half,
+ * inside the texel the step reaches, takes that texel's mean extinction over MeanPoints^3
+ * points of it (pass 0a, TransportTextures::FineExtinction; max(2, downsample): about one
+ * a voxel along each axis, never the centre alone). With one sample a step (a texel of one
+ * voxel) that sample, on the texel's face, serves both halves. */
+struct ExtinctionSampling
+{
+  int StepSamples = 1;
+  int MeanPoints = 2;
+  static ExtinctionSampling For(int downsample);
+};
+
 /** The lines of directional @p light swept by @p plan through @p grid
  * (scatterer_transport_lines.glsl): line k holds texel k + round(z a) of slice z (sweep
  * rows and columns, z the global slice index, a the sideways step per slice). Lo is the

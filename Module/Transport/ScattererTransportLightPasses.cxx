@@ -36,6 +36,7 @@ public:
     : Volume(program, pass.In)
     , Medium(program, "st_medium", pass.Tables.Medium)
     , Extinction(program, "st_extinction", pass.Tables.Extinction)
+    , FineExtinction(program, "st_fineExtinction", pass.Textures.Light)
     , DepthInFront(program, "st_enteringDepth", enteringTexture)
   {
     const vtkScattererTransportVolume::Inputs& in = pass.In;
@@ -59,7 +60,7 @@ public:
       program->SetUniform3f("st_stepGrid", stepGrid);
       program->SetUniformf("st_stepLength", static_cast<float>(step.Length));
     }
-    program->SetUniformi("st_substeps", std::max(1, in.Downsample));
+    program->SetUniformi("st_stepSamples", ExtinctionSampling::For(in.Downsample).StepSamples);
     program->SetUniformf("st_sliceOrigin", static_cast<float>(pass.Grid.FirstIndex[plan.Axis]));
     program->SetUniformf("st_firstSlice", static_cast<float>(plan.Runs.front().first));
     SetIndexUniforms(program, in);
@@ -77,6 +78,7 @@ private:
   ScopedVolume Volume;
   ScopedSampler Medium;
   ScopedSampler Extinction;
+  ScopedSampler FineExtinction;
   ScopedSampler DepthInFront;
 };
 
@@ -325,6 +327,9 @@ void GatherLight(const TransportPass& pass, const SweepPlan& plan, vtkTextureObj
   vtkOpenGLState* state = pass.Window->GetState();
   state->vtkglViewport(0, 0, pass.Grid.Dims[0], pass.Grid.Dims[1]);
   state->vtkglDisable(GL_BLEND);
+  // The light's alpha holds the texels' mean extinction (pass 0a): written rgb only.
+  vtkOpenGLState::ScopedglColorMask mask(state);
+  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
   // Each layer by the cheapest variant that serves all its texels (pass 0c).
   for (int variant = 0; variant < GatherVariants; ++variant)
   {

@@ -32,7 +32,11 @@ std::vector<float> DownloadAtlas(vtkTextureObject* atlas, const int dims[3], int
 /** The render targets of the transport passes. */
 struct TransportTextures
 {
-  vtkSmartPointer<vtkTextureObject> Light; ///< RGBA16F, fine grid: the light received
+  /// RGBA16F, fine grid: rgb the light received (the gather); alpha the texel's mean
+  /// extinction along light paths (pass 0a), what the sweeps take for a step's far half
+  /// (scatterer_transport_sweep_common.glsl). The alpha lived in a texture of its own, 2
+  /// bytes a texel: peak RSS at 511x511x215 on llvmpipe went over the memory target.
+  vtkSmartPointer<vtkTextureObject> Light;
   /// R11F_G11F_B10F, fine grid, what no light changes (pass 0a): the scattering
   /// coefficient as the multiple-scattering source takes it (the source averages it
   /// over a block of texels). With FineGather 5 bytes a texel, where one RGBA16F

@@ -302,9 +302,10 @@ vec2 st_materialCoordAt(vec3 t)
 // OcclusionStrength (1: physical; 0: no shadows, the medium still scatters).
 // One scalar without a label map reads sigma_t from st_extinction, a one-channel 1D copy
 // of st_medium's alpha (TransportTables::Upload): the sweeps, most of a rebuild under
-// several lights, read it twice a texel, and a linear read of one channel in 1D is a
-// fraction of the filtering of a 2D RGBA one (on llvmpipe a light kit's sweeps took 2-12 %
-// less time, the same values: docs/rendering.md).
+// several lights, read it for each step's near half (pass 0a for the texels' means of
+// the far halves), and a linear read of one channel in 1D is a fraction of the filtering
+// of a 2D RGBA one (on llvmpipe a light kit's sweeps took 2-12 % less time, the same
+// values: docs/rendering.md).
 float st_attenuationAt(vec3 t)
 {
 #if ST_COMPONENT_MODE == ST_ONE_SCALAR && ST_MASK != ST_LABEL_MASK

@@ -19,6 +19,11 @@
 //   (scatterer_transport_gather.glsl): -1 outside every material; its material m when
 //   no photon of m's templates lands in another material (the photons then need no
 //   material look-up: no tint, no rescale); m + 8 (ST_MIXED) when one does.
+// - output 2 (Light, alpha; the gather writes its rgb after the sweeps and keeps the
+//   alpha): the extinction along light paths (st_attenuationAt), the mean over
+//   st_meanPoints^3 points spread evenly over the texel: the sweeps take the far half
+//   of each step toward the light from it (st_stepDepth,
+//   scatterer_transport_sweep_common.glsl).
 //============================================================================
 //VTK::Transport::Common
 //VTK::Transport::Materials
@@ -26,6 +31,7 @@
 in vec2 texCoord;
 flat in float st_layer;          // this layer (scatterer_transport_layers_gs.glsl)
 uniform float st_fineSize; // a fine texel's mean size, world units
+uniform int st_meanPoints; // output 2: points per axis (ExtinctionSampling::MeanPoints)
 
 void main()
 {
@@ -57,6 +63,14 @@ void main()
     }
     gather = float(m) + (mixed ? float(ST_MIXED) : 0.0);
   }
+  float extinction = 0.0;
+  int n = st_meanPoints;
+  for (int k = 0; k < n * n * n; ++k)
+  {
+    vec3 s = vec3(float(k % n), float((k / n) % n), float(k / (n * n)));
+    extinction += st_attenuationAt(st_gridToTexture(j + (s + vec3(0.5)) / float(n) - vec3(0.5)));
+  }
   gl_FragData[0] = vec4(medium.rgb * toCentre, 1.0);
   gl_FragData[1] = vec4(st_storedGather(gather));
+  gl_FragData[2] = vec4(0.0, 0.0, 0.0, extinction / float(n * n * n));
 }

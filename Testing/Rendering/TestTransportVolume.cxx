@@ -227,6 +227,36 @@ TEST(TransportVolume, SlabAxisAlignedLightIsBeerLambert)
   EXPECT_NEAR(scene.At(t, 16, 16, 28), 1.0, 1e-3) << "above the slab the light is unattenuated";
 }
 
+TEST(TransportVolume, SlabAtScaleTwoIsBeerLambertThroughTheTexelsMeans)
+{
+  // At TransportScale 2 a step toward the light takes its near half from the volume and
+  // its far half from the mean extinction of the texel it reaches (pass 0a; st_stepDepth,
+  // scatterer_transport_sweep_common.glsl). Texel t of the 17^3 grid is voxel 2t.
+  const int n = 33, g = 17;
+  LitSlab slab(n, 1.0, 8, 23, 0.1, 0, 0, 1); // from +z
+  TransportScene& scene = slab.Scene;
+  scene.Mapper->SetTransportScale(2);
+  const auto t = scene.Transmittance();
+  ASSERT_EQ(t.size(), static_cast<size_t>(g * g * g));
+  const auto at = [&](int k) { return t[8 + g * (8 + static_cast<size_t>(g) * k)]; };
+  const double sigma = -std::log(1.0 - 0.1);
+  // Inside the slab each step crosses 2 voxels of it: exp(-2 sigma) from texel to texel
+  // (each texel's mean light is its centre's times the same factor, which cancels).
+  for (int k : { 10, 8, 6 })
+  {
+    EXPECT_NEAR(at(k - 1) / at(k), std::exp(-2.0 * sigma), 0.01 * std::exp(-2.0 * sigma))
+      << "from texel " << k << " (voxel " << 2 * k << ") down one";
+  }
+  // Where the light has crossed the slab's top: the depth at voxel 20 puts the face on
+  // the top voxel's centre, z = 23, as at TransportScale 1 (SlabAxisAlignedLightIsBeerLambert).
+  // The samples there lie on the voxels' faces (the means at +-0.5 voxel, the near half
+  // at +0.5), where nearest interpolation takes the voxel above; the field's face is at
+  // 23.5, half a voxel off.
+  const double face = 20.0 - std::log(at(10)) / sigma;
+  EXPECT_NEAR(face, 23.0, 0.25) << "T = " << at(10) << " at voxel 20";
+  EXPECT_NEAR(at(14), 1.0, 1e-3) << "above the slab the light is unattenuated";
+}
+
 // The slab z in [8, 23] and, in every component, a floor z <= 4 that keeps something
 // visible (else the volume renders as stock and there is no transport volume).
 bool InSlab(int k)
