@@ -36,7 +36,7 @@ public:
     : Volume(program, pass.In)
     , Medium(program, "st_medium", pass.Tables.Medium)
     , Extinction(program, "st_extinction", pass.Tables.Extinction)
-    , FineExtinction(program, "st_fineExtinction", pass.Textures.Light)
+    , FineExtinction(program, "st_fineExtinction", pass.Textures.FineExtinction)
     , DepthInFront(program, "st_enteringDepth", enteringTexture)
   {
     const vtkScattererTransportVolume::Inputs& in = pass.In;
@@ -327,9 +327,6 @@ void GatherLight(const TransportPass& pass, const SweepPlan& plan, vtkTextureObj
   vtkOpenGLState* state = pass.Window->GetState();
   state->vtkglViewport(0, 0, pass.Grid.Dims[0], pass.Grid.Dims[1]);
   state->vtkglDisable(GL_BLEND);
-  // The light's alpha holds the texels' mean extinction (pass 0a): written rgb only.
-  vtkOpenGLState::ScopedglColorMask mask(state);
-  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
   // Each layer by the cheapest variant that serves all its texels (pass 0c).
   for (int variant = 0; variant < GatherVariants; ++variant)
   {

@@ -44,7 +44,7 @@ void DrawFineMedium(const TransportPass& pass, const CoarseGrid& coarse)
   ScopedSampler materials(program, "st_materialTable", pass.Tables.Materials);
   pass.Window->GetState()->vtkglViewport(0, 0, pass.Grid.Dims[0], pass.Grid.Dims[1]);
   DrawLayers(pass.Framebuffer, pass.Programs.Medium.get(), program,
-    { pass.Textures.FineScattering, pass.Textures.FineGather, pass.Textures.Light },
+    { pass.Textures.FineScattering, pass.Textures.FineGather, pass.Textures.FineExtinction },
     pass.Grid.Dims[2]);
 }
 

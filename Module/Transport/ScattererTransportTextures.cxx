@@ -48,6 +48,24 @@ bool Allocate16F(vtkOpenGLRenderWindow* window, vtkSmartPointer<vtkTextureObject
                          : Allocate3D(window, texture, dims, GL_RGBA16F, GL_RGBA, 4);
 }
 
+// A new R16F 3D texture of `dims` (linear) whose border reads 0: outside the grid there
+// is no matter.
+bool AllocateExtinction(
+  vtkOpenGLRenderWindow* window, vtkSmartPointer<vtkTextureObject>& texture, const int dims[3])
+{
+  float border[4] = { 0, 0, 0, 0 };
+  texture = NewTransportTexture(window, true, vtkTextureObject::ClampToBorder);
+  texture->SetBorderColor(border);
+  texture->SetInternalFormat(GL_R16F);
+  texture->SetFormat(GL_RED);
+  if (!texture->Allocate3D(dims[0], dims[1], dims[2], 1, VTK_FLOAT))
+  {
+    texture = nullptr; // allocated again next time
+    return false;
+  }
+  return true;
+}
+
 // A new R16F texture (linear) whose border reads 1: outside the grid the light has
 // crossed no matter.
 vtkSmartPointer<vtkTextureObject> NewTransmittance(vtkOpenGLRenderWindow* window)
@@ -112,14 +130,16 @@ bool TransportTextures::AllocateFine(
 {
   if (HasSize(this->Light, dims[0], dims[1], dims[2]) &&
     HasSize(this->FineScattering, dims[0], dims[1], dims[2]) &&
-    HasSize(this->FineGather, dims[0], dims[1], dims[2]))
+    HasSize(this->FineGather, dims[0], dims[1], dims[2]) &&
+    HasSize(this->FineExtinction, dims[0], dims[1], dims[2]))
   {
     return true;
   }
   ++this->MediumAllocations;
   if (!Allocate16F(window, this->Light, dims) ||
     !Allocate3D(window, this->FineScattering, dims, GL_R11F_G11F_B10F, GL_RGB, 3) ||
-    !Allocate3D(window, this->FineGather, dims, GL_R8, GL_RED, 1))
+    !Allocate3D(window, this->FineGather, dims, GL_R8, GL_RED, 1) ||
+    !AllocateExtinction(window, this->FineExtinction, dims))
   {
     why = "the light textures could not be allocated";
     return false;
@@ -258,16 +278,16 @@ size_t TransportTextures::GetGPUBytes() const
     r16f *
     (Texels(this->Transmittance) + Texels(this->Slices[0]) + Texels(this->Slices[1]) +
       2 * Texels(this->Lines) + 4 * (Texels(this->LineEnds[0]) + Texels(this->LineEnds[1])) +
-      Texels(this->CoarseOcclusion)) +
+      Texels(this->FineExtinction) + Texels(this->CoarseOcclusion)) +
     this->Tiles.GetGPUBytes();
 }
 
 void TransportTextures::ReleaseGraphicsResources(vtkWindow* window)
 {
-  for (auto* t : { &this->Light, &this->FineScattering, &this->FineGather, &this->Arriving,
-         &this->Transmittance, &this->Slices[0], &this->Slices[1], &this->Lines, &this->LineEnds[0],
-         &this->LineEnds[1], &this->Fluence[0], &this->Fluence[1], &this->CoarseMedium,
-         &this->CoarseSource, &this->CoarseOcclusion })
+  for (auto* t : { &this->Light, &this->FineScattering, &this->FineGather, &this->FineExtinction,
+         &this->Arriving, &this->Transmittance, &this->Slices[0], &this->Slices[1], &this->Lines,
+         &this->LineEnds[0], &this->LineEnds[1], &this->Fluence[0], &this->Fluence[1],
+         &this->CoarseMedium, &this->CoarseSource, &this->CoarseOcclusion })
   {
     if (*t)
     {

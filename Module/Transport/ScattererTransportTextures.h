@@ -32,11 +32,7 @@ std::vector<float> DownloadAtlas(vtkTextureObject* atlas, const int dims[3], int
 /** The render targets of the transport passes. */
 struct TransportTextures
 {
-  /// RGBA16F, fine grid: rgb the light received (the gather); alpha the texel's mean
-  /// extinction along light paths (pass 0a), what the sweeps take for a step's far half
-  /// (scatterer_transport_sweep_common.glsl). The alpha lived in a texture of its own, 2
-  /// bytes a texel: peak RSS at 511x511x215 on llvmpipe went over the memory target.
-  vtkSmartPointer<vtkTextureObject> Light;
+  vtkSmartPointer<vtkTextureObject> Light; ///< RGBA16F, fine grid: the light received
   /// R11F_G11F_B10F, fine grid, what no light changes (pass 0a): the scattering
   /// coefficient as the multiple-scattering source takes it (the source averages it
   /// over a block of texels). With FineGather 5 bytes a texel, where one RGBA16F
@@ -44,6 +40,12 @@ struct TransportTextures
   vtkSmartPointer<vtkTextureObject> FineScattering;
   /// R8, fine grid (pass 0a): the gather each texel takes (st_storedGather)
   vtkSmartPointer<vtkTextureObject> FineGather;
+  /// R16F, fine grid (pass 0a): the extinction along light paths, the texel's mean (a
+  /// step's far half in the sweeps, scatterer_transport_sweep_common.glsl); its border
+  /// reads 0. A texture of its own: kept in Light's unused alpha instead, the sweeps'
+  /// trilinear read of four half-float channels made a headlight rebuild 18 % and
+  /// pvbatch's light-kit orbit 10-20 % slower on llvmpipe (docs/rendering.md).
+  vtkSmartPointer<vtkTextureObject> FineExtinction;
   /// Per layer of FineGather, the gather variant it needs (a GatherVariant)
   std::vector<int> LayerGathers;
   /// RGBA16F, fine grid + 1 texel a side: light arriving unscattered (null when unused)

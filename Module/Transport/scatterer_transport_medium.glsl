@@ -19,10 +19,9 @@
 //   (scatterer_transport_gather.glsl): -1 outside every material; its material m when
 //   no photon of m's templates lands in another material (the photons then need no
 //   material look-up: no tint, no rescale); m + 8 (ST_MIXED) when one does.
-// - output 2 (Light, alpha; the gather writes its rgb after the sweeps and keeps the
-//   alpha): the extinction along light paths (st_attenuationAt), the mean over
-//   st_meanPoints^3 points spread evenly over the texel: the sweeps take the far half
-//   of each step toward the light from it (st_stepDepth,
+// - output 2 (FineExtinction): the extinction along light paths (st_attenuationAt),
+//   the mean over st_meanPoints^3 points spread evenly over the texel: the sweeps take
+//   the far half of each step toward the light from it (st_stepDepth,
 //   scatterer_transport_sweep_common.glsl).
 //============================================================================
 //VTK::Transport::Common
@@ -72,5 +71,5 @@ void main()
   }
   gl_FragData[0] = vec4(medium.rgb * toCentre, 1.0);
   gl_FragData[1] = vec4(st_storedGather(gather));
-  gl_FragData[2] = vec4(0.0, 0.0, 0.0, extinction / float(n * n * n));
+  gl_FragData[2] = vec4(extinction / float(n * n * n));
 }

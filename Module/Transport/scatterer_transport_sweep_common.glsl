@@ -11,7 +11,7 @@ uniform vec3 st_sweepDims;         // (rows, columns, slices) of the sweep textu
 uniform mat3 st_worldToGrid;       // world vector -> grid-index vector
 uniform mat3 st_gridToWorld;       // grid-index vector -> world vector
 uniform int st_stepSamples;        // extinction samples a step (ExtinctionSampling)
-uniform sampler3D st_fineExtinction; // the light texture: alpha per texel its mean extinction (pass 0a)
+uniform sampler3D st_fineExtinction; // per texel its mean extinction (pass 0a); border 0
 uniform mat4 st_texToIndex;        // volume texture coordinates -> structured index
 uniform sampler2D st_enteringDepth;
 uniform vec3 st_enteringLight;     // positional: the light (index space)
@@ -57,8 +57,8 @@ vec2 st_sliceShift(float z, vec2 a)
 //   tauHalf = len / S * sum_{f_i <= 1/2} w_i sigma(j + f_i stepGrid)   (w_i = 1/2 on the face, else 1)
 //   tau     = tauHalf + len / 2 * sigmaBar(j + stepGrid)
 // sigma the extinction along light paths in the volume (st_attenuationAt), sigmaBar its
-// mean over a texel (pass 0a, the light texture's alpha, read trilinearly between
-// texels; 0 outside the grid). The near half keeps the volume's resolution: it decides the texel's
+// mean over a texel (pass 0a, st_fineExtinction, read trilinearly between texels; 0
+// outside the grid). The near half keeps the volume's resolution: it decides the texel's
 // own mean light (st_stepFactors), which lights a surface inside it. The far half only
 // passes the light on; there the texel it lies in stands for all of its matter rather
 // than for points of one line through it, at one read of a one-channel texture instead
@@ -82,10 +82,7 @@ void st_stepDepth(vec3 j, vec3 stepGrid, float len, out float tau, out float tau
     tau = 2.0 * tauHalf; // the one sample, on the face, serves both halves
     return;
   }
-  // Outside the grid's texels there is no matter (the texture clamps to its edge).
-  vec3 q = j + stepGrid;
-  float inGrid = float(all(greaterThan(q, vec3(-0.5))) && all(lessThan(q, st_gridDims - vec3(0.5))));
-  tau = tauHalf + 0.5 * len * inGrid * texture(st_fineExtinction, (q + vec3(0.5)) / st_gridDims).a;
+  tau = tauHalf + 0.5 * len * texture(st_fineExtinction, (j + stepGrid + vec3(0.5)) / st_gridDims).r;
 }
 
 // Over a step of optical depth tau (tauHalf inside the texel): the light's factor,
