@@ -271,16 +271,21 @@ vec4 st_mediumAt(vec3 t)
 #endif
 }
 
+// Point k of n^3 spread evenly over texel j, in grid index units.
+vec3 st_texelPoint(vec3 j, int k, int n)
+{
+  vec3 s = vec3(float(k % n), float((k / n) % n), float(k / (n * n)));
+  return j + (s + vec3(0.5)) / float(n) - vec3(0.5);
+}
+
 // The diffusion's medium passes (0a, 0b) take a fine texel's medium as the mean over
 // st_subsamples^3 points spread evenly over the texel (CoarseGrid::Subsamples: 2 on a
 // frame built coarser while the user drags, else 1, the texel's centre): point k of
-// texel j, in grid index units.
+// texel j.
 uniform int st_subsamples;
 vec3 st_subsample(vec3 j, int k)
 {
-  int n = st_subsamples;
-  vec3 s = vec3(float(k % n), float((k / n) % n), float(k / (n * n)));
-  return j + (s + vec3(0.5)) / float(n) - vec3(0.5);
+  return st_texelPoint(j, k, st_subsamples);
 }
 
 // Where the material table is read for the matter at texture position t (inside the

@@ -66,8 +66,7 @@ void main()
   int n = st_meanPoints;
   for (int k = 0; k < n * n * n; ++k)
   {
-    vec3 s = vec3(float(k % n), float((k / n) % n), float(k / (n * n)));
-    extinction += st_attenuationAt(st_gridToTexture(j + (s + vec3(0.5)) / float(n) - vec3(0.5)));
+    extinction += st_attenuationAt(st_gridToTexture(st_texelPoint(j, k, n)));
   }
   gl_FragData[0] = vec4(medium.rgb * toCentre, 1.0);
   gl_FragData[1] = vec4(st_storedGather(gather));
