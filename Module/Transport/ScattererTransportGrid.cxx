@@ -263,7 +263,7 @@ ExtinctionSampling ExtinctionSampling::For(int downsample)
 {
   ExtinctionSampling sampling;
   sampling.StepSamples = std::max(1, downsample);
-  sampling.MeanPoints = 2;
+  sampling.MeanPoints = sampling.StepSamples > 1 ? 2 : 0;
   return sampling;
 }
 

@@ -148,11 +148,13 @@ LightStep StepTowardLight(const TransportGrid& grid, const SweepPlan& plan,
  * scale: one point a voxel along each axis (4^3 at 511x511x215, scale 4) cost about a
  * second a medium change on llvmpipe, and the dragging frames (scale 4 on the CT head)
  * measured closer to the reference with 2^3. With one sample a step (a texel of one
- * voxel) that sample, on the texel's face, serves both halves. */
+ * voxel) that sample, on the texel's face, serves both halves: MeanPoints is 0, and no
+ * texel's mean is computed or held (the texture is one texel, unread). */
 struct ExtinctionSampling
 {
   int StepSamples = 1;
-  int MeanPoints = 2;
+  int MeanPoints = 0;
+  bool UsesTexelMeans() const { return this->MeanPoints > 0; }
   static ExtinctionSampling For(int downsample);
 };
 

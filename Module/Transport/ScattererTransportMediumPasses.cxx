@@ -36,16 +36,25 @@ void DrawFineMedium(const TransportPass& pass, const CoarseGrid& coarse)
   }
   program->SetUniformf("st_fineSize", meanSize);
   program->SetUniformi("st_subsamples", coarse.Subsamples);
-  program->SetUniformi("st_meanPoints", ExtinctionSampling::For(in.Downsample).MeanPoints);
+  const ExtinctionSampling sampling = ExtinctionSampling::For(in.Downsample);
+  program->SetUniformi("st_meanPoints", sampling.MeanPoints);
   ScopedVolume volume(program, in);
   ScopedSampler medium(program, "st_medium", pass.Tables.Medium);
   ScopedSampler extinction(program, "st_extinction", pass.Tables.Extinction);
   ScopedSampler kernel(program, "st_kernel", pass.Tables.Kernel);
   ScopedSampler materials(program, "st_materialTable", pass.Tables.Materials);
   pass.Window->GetState()->vtkglViewport(0, 0, pass.Grid.Dims[0], pass.Grid.Dims[1]);
-  DrawLayers(pass.Framebuffer, pass.Programs.Medium.get(), program,
-    { pass.Textures.FineScattering, pass.Textures.FineGather, pass.Textures.FineExtinction },
-    pass.Grid.Dims[2]);
+  if (sampling.UsesTexelMeans())
+  {
+    DrawLayers(pass.Framebuffer, pass.Programs.Medium.get(), program,
+      { pass.Textures.FineScattering, pass.Textures.FineGather, pass.Textures.FineExtinction },
+      pass.Grid.Dims[2]);
+  }
+  else
+  {
+    DrawLayers(pass.Framebuffer, pass.Programs.Medium.get(), program,
+      { pass.Textures.FineScattering, pass.Textures.FineGather }, pass.Grid.Dims[2]);
+  }
 }
 
 // Pass 0c: the gather variant each layer needs: the texels of each layer at or above

@@ -126,12 +126,14 @@ std::vector<float> DownloadAtlas(vtkTextureObject* atlas, const int dims[3], int
 }
 
 bool TransportTextures::AllocateFine(
-  vtkOpenGLRenderWindow* window, const int dims[3], std::string& why)
+  vtkOpenGLRenderWindow* window, const int dims[3], bool texelMeans, std::string& why)
 {
+  const int one[3] = { 1, 1, 1 };
+  const int* meanDims = texelMeans ? dims : one;
   if (HasSize(this->Light, dims[0], dims[1], dims[2]) &&
     HasSize(this->FineScattering, dims[0], dims[1], dims[2]) &&
     HasSize(this->FineGather, dims[0], dims[1], dims[2]) &&
-    HasSize(this->FineExtinction, dims[0], dims[1], dims[2]))
+    HasSize(this->FineExtinction, meanDims[0], meanDims[1], meanDims[2]))
   {
     return true;
   }
@@ -139,7 +141,7 @@ bool TransportTextures::AllocateFine(
   if (!Allocate16F(window, this->Light, dims) ||
     !Allocate3D(window, this->FineScattering, dims, GL_R11F_G11F_B10F, GL_RGB, 3) ||
     !Allocate3D(window, this->FineGather, dims, GL_R8, GL_RED, 1) ||
-    !AllocateExtinction(window, this->FineExtinction, dims))
+    !AllocateExtinction(window, this->FineExtinction, meanDims))
   {
     why = "the light textures could not be allocated";
     return false;

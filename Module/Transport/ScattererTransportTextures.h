@@ -44,7 +44,9 @@ struct TransportTextures
   /// step's far half in the sweeps, scatterer_transport_sweep_common.glsl); its border
   /// reads 0. A texture of its own: kept in Light's unused alpha instead, the sweeps'
   /// trilinear read of four half-float channels made a headlight rebuild 18 % and
-  /// pvbatch's light-kit orbit 10-20 % slower on llvmpipe (docs/rendering.md).
+  /// pvbatch's light-kit orbit 10-20 % slower on llvmpipe (docs/rendering.md). One
+  /// texel, neither drawn nor read, where a sweep takes no texel's mean
+  /// (ExtinctionSampling: a texel of one voxel).
   vtkSmartPointer<vtkTextureObject> FineExtinction;
   /// Per layer of FineGather, the gather variant it needs (a GatherVariant)
   std::vector<int> LayerGathers;
@@ -70,9 +72,11 @@ struct TransportTextures
   /// the medium passes drew is gone when it changes.
   int MediumAllocations = 0;
 
-  /** Light, FineScattering and FineGather on the fine grid of @p dims; false with @p why set if
+  /** Light, FineScattering, FineGather and, where the sweeps take texels' means
+   * (@p texelMeans), FineExtinction on the fine grid of @p dims; false with @p why set if
    * refused. */
-  bool AllocateFine(vtkOpenGLRenderWindow* window, const int dims[3], std::string& why);
+  bool AllocateFine(
+    vtkOpenGLRenderWindow* window, const int dims[3], bool texelMeans, std::string& why);
 
   /** Arriving for the fine grid of @p dims (one texel more a side), needed by builds
    * whose lights are more than one directional light; false with @p why set if refused. */

@@ -22,7 +22,8 @@
 // - output 2 (FineExtinction): the extinction along light paths (st_attenuationAt),
 //   the mean over st_meanPoints^3 points spread evenly over the texel: the sweeps take
 //   the far half of each step toward the light from it (st_stepDepth,
-//   scatterer_transport_sweep_common.glsl).
+//   scatterer_transport_sweep_common.glsl). With st_meanPoints 0 (a texel of one voxel)
+//   the sweeps take no mean: none is computed, and output 2 has no target.
 //============================================================================
 //VTK::Transport::Common
 //VTK::Transport::Materials
@@ -70,5 +71,5 @@ void main()
   }
   gl_FragData[0] = vec4(medium.rgb * toCentre, 1.0);
   gl_FragData[1] = vec4(st_storedGather(gather));
-  gl_FragData[2] = vec4(extinction / float(n * n * n));
+  gl_FragData[2] = vec4(n > 0 ? extinction / float(n * n * n) : 0.0);
 }

@@ -266,7 +266,8 @@ bool vtkScattererTransportVolume::Update(
     }
     s.Framebuffer->SetContext(window);
   }
-  if (!s.Textures.AllocateFine(window, s.Grid.Dims, why))
+  if (!s.Textures.AllocateFine(window, s.Grid.Dims,
+        scatterer_gpu::ExtinctionSampling::For(in.Downsample).UsesTexelMeans(), why))
   {
     return false;
   }

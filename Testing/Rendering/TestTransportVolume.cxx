@@ -7,6 +7,7 @@
 #include "ScattererRenderHarness.h"
 #include "ScattererTestVolumes.h"
 #include "ScattererTransportGrid.h"
+#include "ScattererTransportTextures.h"
 #include "ScattererTransportTiles.h"
 
 #include "vtkCamera.h"
@@ -255,6 +256,34 @@ TEST(TransportVolume, SlabAtScaleTwoIsBeerLambertThroughTheTexelsMeans)
   const double face = 20.0 - std::log(at(10)) / sigma;
   EXPECT_NEAR(face, 23.0, 0.25) << "T = " << at(10) << " at voxel 20";
   EXPECT_NEAR(at(14), 1.0, 1e-3) << "above the slab the light is unattenuated";
+}
+
+TEST(TransportVolume, TexelsOfOneVoxelHoldNoMeanExtinction)
+{
+  // A step's one extinction sample serves both its halves where a texel is one voxel
+  // (ExtinctionSampling): no texel's mean is taken, and its texture is one texel. The
+  // fine grid's textures of a 17^3 grid with and without the means differ by their R16F
+  // texture's 2 bytes a texel.
+  using scatterer_gpu::ExtinctionSampling;
+  EXPECT_FALSE(ExtinctionSampling::For(1).UsesTexelMeans());
+  EXPECT_TRUE(ExtinctionSampling::For(2).UsesTexelMeans());
+  EXPECT_TRUE(ExtinctionSampling::For(4).UsesTexelMeans());
+  vtkRenderWindow* window = scatterer_testing::SharedWindow();
+  auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window);
+  ASSERT_NE(gl, nullptr);
+  gl->Initialize();
+  gl->MakeCurrent();
+  const int g = 17, dims[3] = { g, g, g };
+  size_t bytes[2];
+  for (int means : { 0, 1 })
+  {
+    scatterer_gpu::TransportTextures textures;
+    std::string why;
+    ASSERT_TRUE(textures.AllocateFine(gl, dims, means != 0, why)) << why;
+    bytes[means] = textures.GetGPUBytes();
+    textures.ReleaseGraphicsResources(window);
+  }
+  EXPECT_EQ(bytes[1] - bytes[0], 2u * (g * g * g - 1)) << "the means are held at scale 1";
 }
 
 // The slab z in [8, 23] and, in every component, a floor z <= 4 that keeps something
