@@ -8,7 +8,8 @@ illumination reach, and the ranks exchange the light between the pieces
 (docs/paraview.md). Prints one JSON line: ranks, the first frame (pipeline update,
 ghost exchange, light transport volume) and the median of the next frames in
 milliseconds, and what rank 0 held and did: ghost layers, piece size, the light
-exchange's milliseconds and bytes. With --move-light the scene light moves a little
+exchange's milliseconds and bytes, and (frames that move the camera or a light) its
+illumination rebuilds and their stages' milliseconds. With --move-light the scene light moves a little
 every frame, so every frame rebuilds the illumination and exchanges light.
 """
 import argparse
@@ -66,8 +67,10 @@ if args.move_light or args.orbit or args.light_kit:
     # Only what is asked moves: with --light-kit alone, still frames of a still camera
     # (timed_renders nudges the camera, which moves the light kit).
     first, _ = scene_lib.timed_renders(view, 0)
-    exchanges = (scene_lib.rank0_info(display)["ScattererLightExchangeInfo"][0]
-                 if args.representation == "Scatterer Volume" else 0)
+    scatterer = args.representation == "Scatterer Volume"
+    exchanges = scene_lib.rank0_info(display)["ScattererLightExchangeInfo"][0] if scatterer else 0
+    builds = scene_lib.rank0_info(display)["ScattererIlluminationBuildInfo"] if scatterer else None
+    rebuilds, medium_rebuilds = [], 0
     frames = []
     for i in range(args.frames):
         if args.move_light:
@@ -78,9 +81,15 @@ if args.move_light or args.orbit or args.light_kit:
         start = time.perf_counter()
         view.InteractiveRender() if args.interactive else view.StillRender()
         frames.append((time.perf_counter() - start) * 1000.0)
-        if args.representation == "Scatterer Volume":
-            # The frame's own exchange: none when the count stood still.
-            count, ms, received, _ = scene_lib.rank0_info(display)["ScattererLightExchangeInfo"]
+        if scatterer:
+            # The frame's own exchange and rebuild: none when the count stood still.
+            info = scene_lib.rank0_info(display)
+            count, ms, received, _ = info["ScattererLightExchangeInfo"]
+            now = info["ScattererIlluminationBuildInfo"]
+            if now[0] > builds[0]:
+                rebuilds.append(now[2:])
+            medium_rebuilds += int(now[1] - builds[1])
+            builds = now
             exchanged = count > exchanges
             exchanges = count
             exchange_ms.append(ms if exchanged else 0.0)
@@ -102,6 +111,16 @@ if args.representation == "Scatterer Volume":
                    "light_exchange": args.light_exchange, "interactive": args.interactive,
                    "light_kit": args.light_kit, "orbit": args.orbit,
                    "move_light": args.move_light})
+    if frames and (args.move_light or args.orbit or args.light_kit):
+        # The frames' own rebuilds (rank 0): how many, how many also redrew the medium's
+        # passes, and the median milliseconds of a rebuild and of its stages.
+        result["rank0_rebuilds"] = len(rebuilds)
+        result["rank0_medium_rebuilds"] = medium_rebuilds
+        if rebuilds:
+            names = ("rebuild", "medium", "sweeps", "arriving", "gather", "diffusion")
+            result["rank0_rebuild_ms"] = {
+                name: round(statistics.median(r[i] for r in rebuilds), 1)
+                for i, name in enumerate(names)}
     if exchange_ms:  # the frames' own exchanges (the screenshot renders once more, still)
         result["rank0_exchange_ms"] = round(statistics.median(exchange_ms), 1)
         result["rank0_exchange_bytes"] = statistics.median(exchange_bytes)

@@ -18,7 +18,7 @@ void TransportProgress::BeginBuild(int lights, int iterations, bool medium)
 void TransportProgress::StepDone()
 {
   ++this->Done;
-  if (this->Callback && this->Building)
+  if (this->Waits())
   {
     glFinish();
     this->Callback(std::min(1.0, this->Done / static_cast<double>(this->Total)));

@@ -22,6 +22,8 @@ public:
   /** A build of @p lights lights and @p iterations diffusion iterations starts, with
    * the medium passes first if @p medium. */
   void BeginBuild(int lights, int iterations, bool medium);
+  /** True while a build reports (and so waits for the GPU at each stage). */
+  bool Waits() const { return this->Callback && this->Building; }
   /** The build is over (done or failed): later stages (a test's sweep) report nothing. */
   void EndBuild() { this->Building = false; }
 

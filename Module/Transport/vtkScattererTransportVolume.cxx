@@ -97,10 +97,11 @@ bool vtkScattererTransportVolume::vtkInternals::RunPasses(
 {
   this->LastStages = StageMilliseconds();
   auto lapStart = std::chrono::steady_clock::now();
-  // Adds the time since the last lap to @p stage.
+  // Adds the time since the last lap to @p stage. A build that reports progress waits
+  // for each stage anyway: then the stage's time is its GPU work too.
   const auto lap = [&](double& stage)
   {
-    if (synchronous)
+    if (synchronous || this->Progress.Waits())
     {
       glFinish();
     }

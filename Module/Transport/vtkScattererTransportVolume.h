@@ -227,9 +227,10 @@ public:
   };
 
   /**
-   * The stages of the last rebuild (all 0: the frame reused it). With SynchronousTiming
-   * each stage waits for the GPU (glFinish) and its time is its GPU work; without, it is
-   * the time to issue its passes.
+   * The stages of the last rebuild (all 0: the frame reused it). With SynchronousTiming,
+   * or with a progress callback (SetProgressCallback, which waits for each stage
+   * anyway), each stage waits for the GPU (glFinish) and its time is its GPU work;
+   * otherwise it is the time to issue its passes.
    */
   StageMilliseconds GetLastBuildStageMilliseconds() const;
 

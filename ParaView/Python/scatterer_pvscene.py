@@ -238,7 +238,8 @@ def rank0_info(display):
     display.SMProxy.UpdatePropertyInformation()
     names = ("ScattererRequestedGhostLayersInfo", "ScattererRendersOwnedPartOnlyInfo",
              "ScattererOwnedBoundsInfo", "ScattererPieceMemoryKiBInfo",
-             "ScattererShaderFeaturesInfo", "ScattererLightExchangeInfo")
+             "ScattererShaderFeaturesInfo", "ScattererLightExchangeInfo",
+             "ScattererIlluminationBuildInfo")
     info = {}
     for name in names:
         prop = display.SMProxy.GetProperty(name)

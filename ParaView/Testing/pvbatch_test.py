@@ -219,7 +219,8 @@ def representation_object(display):
 
 
 def progress_and_interaction_one_rank(args):
-    """Progress while the illumination is built, and coarser sampling while dragging."""
+    """Progress while the illumination is built, coarser sampling while dragging, and an
+    orbit under the light kit that rebuilds the lights alone."""
     from paraview import servermanager
     mhd = scenes.write_split_shadow_volume(args.out_dir)
     scene = scenes.SPLIT_SHADOW_SCENE
@@ -267,6 +268,29 @@ def progress_and_interaction_one_rank(args):
           "(interactive %d, still %d)" % (interactive, still))
     check(features.startswith("transport"), "interactive frames keep the illumination: %s"
           % features)
+
+    # Orbiting under ParaView's light kit (lights that follow the camera): each frame
+    # rebuilds the lights' passes, never what depends on the medium alone.
+    view.AdditionalLights = []
+    view.UseLight = 1
+    view.StillRender()
+    before = scenes.rank0_info(display)["ScattererIlluminationBuildInfo"]
+    frames = 3
+    stages = []
+    for _ in range(frames):
+        view.GetActiveCamera().Azimuth(2.0)
+        view.StillRender()
+        stages.append(scenes.rank0_info(display)["ScattererIlluminationBuildInfo"])
+    after = stages[-1]
+    print("illumination builds (count, medium count, ms, medium, sweeps, arriving, gather, "
+          "diffusion): before %s, after %s" % (before, after))
+    check(after[0] - before[0] == frames and after[1] == before[1],
+          "each orbit frame rebuilds the lights (%d rebuilds) and none the medium's passes "
+          "(%d)" % (after[0] - before[0], after[1] - before[1]))
+    check(all(info[3] == 0.0 and info[4] > 0.0 and sum(info[3:]) <= info[2] * 1.01
+              for info in stages),
+          "an orbit frame's stages: the sweeps take time, the medium none, and together no "
+          "more than the rebuild")
 
 
 CASES = {"ct-head-one-rank": ct_head_one_rank, "ct-head-ranks": ct_head_ranks,

@@ -17,6 +17,7 @@
 #include "vtkRenderWindow.h"
 #include "vtkScattererLightExchange.h"
 #include "vtkScattererTemplateVolumeMapper.h"
+#include "vtkScattererTransportVolume.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkVolumeProperty.h"
@@ -165,6 +166,21 @@ vtkScattererForward(OcclusionStrength, double);
 vtkScattererForward(LongRangeMultiple, double);
 vtkScattererForward(PhotonThreshold, double);
 #undef vtkScattererForward
+
+double* vtkScattererVolumeRepresentation::GetIlluminationBuildInfo()
+{
+  const vtkScattererTransportVolume* transport = this->GetScattererMapper()->GetTransportVolume();
+  if (transport)
+  {
+    const vtkScattererTransportVolume::StageMilliseconds stages =
+      transport->GetLastBuildStageMilliseconds();
+    const double info[8] = { static_cast<double>(transport->GetBuildCount()),
+      static_cast<double>(transport->GetMediumBuildCount()), transport->GetLastBuildMilliseconds(),
+      stages.Medium, stages.Sweeps, stages.Arriving, stages.Gather, stages.Diffusion };
+    std::copy(info, info + 8, this->IlluminationBuildInfo);
+  }
+  return this->IlluminationBuildInfo;
+}
 
 const char* vtkScattererVolumeRepresentation::GetShaderFeatures()
 {

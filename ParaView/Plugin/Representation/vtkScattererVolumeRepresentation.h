@@ -106,6 +106,15 @@ public:
    */
   double* GetLightExchangeInfo() VTK_SIZEHINT(4);
 
+  /**
+   * This rank's light transport volume: rebuilds so far, of them those that drew the
+   * medium's passes again (a new transfer function, clipping, ...), the last rebuild's
+   * milliseconds, then its stages' (vtkScattererTransportVolume::StageMilliseconds:
+   * medium, sweeps, arriving, gather, diffusion). All 0 before the first. ParaView's
+   * progress bar makes each stage wait for the GPU, so here they include its work.
+   */
+  double* GetIlluminationBuildInfo() VTK_SIZEHINT(8);
+
   /** Ghost layers the last update asked for (0 when the data is not split). */
   vtkGetMacro(RequestedGhostLevels, int);
 
@@ -155,6 +164,7 @@ private:
   vtkRenderer* ObservedRenderer = nullptr;
   unsigned long ExchangeObserver = 0;
   double LightExchangeInfo[4] = { 0, 0, 0, 0 };
+  double IlluminationBuildInfo[8] = { 0, 0, 0, 0, 0, 0, 0, 0 };
 };
 
 #endif
