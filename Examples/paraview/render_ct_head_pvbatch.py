@@ -9,8 +9,8 @@ illumination reach, and the ranks exchange the light between the pieces
 ghost exchange, light transport volume) and the median of the next frames in
 milliseconds, and what rank 0 held and did: ghost layers, piece size, the light
 exchange's milliseconds and bytes, and (frames that move the camera or a light) its
-illumination rebuilds and their stages' milliseconds. With --move-light the scene light moves a little
-every frame, so every frame rebuilds the illumination and exchanges light.
+illumination rebuilds and their stages' milliseconds. With --move-light the scene light
+moves a little every frame, so every frame rebuilds the illumination and exchanges light.
 """
 import argparse
 import json
