@@ -68,8 +68,9 @@ if args.move_light or args.orbit or args.light_kit:
     # (timed_renders nudges the camera, which moves the light kit).
     first, _ = scene_lib.timed_renders(view, 0)
     scatterer = args.representation == "Scatterer Volume"
-    exchanges = scene_lib.rank0_info(display)["ScattererLightExchangeInfo"][0] if scatterer else 0
-    builds = scene_lib.rank0_info(display)["ScattererIlluminationBuildInfo"] if scatterer else None
+    info = scene_lib.rank0_info(display) if scatterer else None
+    exchanges = info["ScattererLightExchangeInfo"][0] if scatterer else 0
+    builds = info["ScattererIlluminationBuildInfo"] if scatterer else None
     rebuilds, medium_rebuilds = [], 0
     frames = []
     for i in range(args.frames):

@@ -276,19 +276,19 @@ def progress_and_interaction_one_rank(args):
     view.StillRender()
     before = scenes.rank0_info(display)["ScattererIlluminationBuildInfo"]
     frames = 3
-    stages = []
+    orbit = []  # each frame's ScattererIlluminationBuildInfo
     for _ in range(frames):
         view.GetActiveCamera().Azimuth(2.0)
         view.StillRender()
-        stages.append(scenes.rank0_info(display)["ScattererIlluminationBuildInfo"])
-    after = stages[-1]
+        orbit.append(scenes.rank0_info(display)["ScattererIlluminationBuildInfo"])
+    after = orbit[-1]
     print("illumination builds (count, medium count, ms, medium, sweeps, arriving, gather, "
           "diffusion): before %s, after %s" % (before, after))
     check(after[0] - before[0] == frames and after[1] == before[1],
           "each orbit frame rebuilds the lights (%d rebuilds) and none the medium's passes "
           "(%d)" % (after[0] - before[0], after[1] - before[1]))
     check(all(info[3] == 0.0 and info[4] > 0.0 and sum(info[3:]) <= info[2] * 1.01
-              for info in stages),
+              for info in orbit),
           "an orbit frame's stages: the sweeps take time, the medium none, and together no "
           "more than the rebuild")
 

@@ -24,6 +24,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 vtkStandardNewMacro(vtkScattererVolumeRepresentation);
 
@@ -174,10 +175,11 @@ double* vtkScattererVolumeRepresentation::GetIlluminationBuildInfo()
   {
     const vtkScattererTransportVolume::StageMilliseconds stages =
       transport->GetLastBuildStageMilliseconds();
-    const double info[8] = { static_cast<double>(transport->GetBuildCount()),
+    const double info[] = { static_cast<double>(transport->GetBuildCount()),
       static_cast<double>(transport->GetMediumBuildCount()), transport->GetLastBuildMilliseconds(),
       stages.Medium, stages.Sweeps, stages.Arriving, stages.Gather, stages.Diffusion };
-    std::copy(info, info + 8, this->IlluminationBuildInfo);
+    static_assert(sizeof(info) == sizeof(this->IlluminationBuildInfo), "one value each");
+    std::copy(std::begin(info), std::end(info), this->IlluminationBuildInfo);
   }
   return this->IlluminationBuildInfo;
 }
