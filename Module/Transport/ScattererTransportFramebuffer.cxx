@@ -17,6 +17,7 @@ TransportPassState::TransportPassState(
   , Blend(State, GL_BLEND)
   , Depth(State, GL_DEPTH_TEST)
   , Scissor(State, GL_SCISSOR_TEST)
+  , ScissorBox(State)
   , BlendFunc(State)
 {
   this->State->vtkglDisable(GL_BLEND);

@@ -19,7 +19,8 @@ class vtkTextureObject;
 namespace scatterer_gpu
 {
 /** The GL state of the transport passes for its lifetime (no blending, depth or scissor
- * test, @p framebuffer bound), and the caller's restored after them. */
+ * test, @p framebuffer bound), and the caller's restored after them (its scissor box
+ * too: the renderer's viewport keeps to it). */
 class TransportPassState
 {
 public:
@@ -34,6 +35,7 @@ private:
   vtkOpenGLState::ScopedglEnableDisable Blend;
   vtkOpenGLState::ScopedglEnableDisable Depth;
   vtkOpenGLState::ScopedglEnableDisable Scissor;
+  vtkOpenGLState::ScopedglScissor ScissorBox; // a directional light's mean draws a part
   vtkOpenGLState::ScopedglBlendFuncSeparate BlendFunc;
 };
 

@@ -153,48 +153,111 @@ void DrawSlices(const TransportPass& pass, vtkOpenGLQuadHelper* quad, vtkShaderP
 }
 
 // A directional light's lines swept in parallel (scatterer_transport_lines.glsl, into
-// Lines by image store), kLineSlices slices a draw, each draw over the lines with a
-// texel in the grid in its slices.
-// @p all: the lines of all the slices (LinesOf), the lines' textures allocated for them.
-void DrawLines(const TransportPass& pass, vtkShaderProgram* program, vtkOpenGLQuadHelper* lines,
-  const vtkScattererTransportVolume::Light& light, const SweepPlan& plan, const int sweepDims[3],
-  const LineRange& all)
+// Lines by image store) go kLineSlices slices a draw, and the mean of their slices
+// (scatterer_transport_line_mean.glsl) follows every kMeanSlices of them, so that the
+// lines' texture holds a ring of kMeanSlices + 1 slices (those and the slice before
+// them) instead of the whole sweep. A mean after every draw of lines (a ring of 17)
+// held 0.4 MiB less on the CT head, but its many small draws cost a light kit's
+// sweeps 10-18 % on llvmpipe (every two: 8 %; docs/rendering.md, the lines' ring).
+constexpr int kLineSlices = 16;
+constexpr int kMeanSlices = 2 * kLineSlices;
+
+int LineSlots(const int sweepDims[3])
 {
-  constexpr int kLineSlices = 16;
-  TransportTextures& textures = pass.Textures;
+  return std::min(sweepDims[2], kMeanSlices + 1);
+}
+
+// Both lines' ends as if no draw had left a line anywhere yet: step -1 matches no draw.
+void ClearLineEnds(const TransportPass& pass, const LineRange& all)
+{
   vtkOpenGLState* state = pass.Window->GetState();
-  const float origin[2] = { static_cast<float>(all.Lo[0]), static_cast<float>(all.Lo[1]) };
-  program->SetUniform2f("st_lineOrigin", origin);
-  program->SetUniformi("st_chunkSlices", kLineSlices);
-  program->SetUniformi("st_lines", 0); // image unit 0
-  // The mean's draw of the light before read Lines: its reads come before these stores.
-  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
-  glBindImageTexture(0, textures.Lines->GetHandle(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG16F);
   pass.Framebuffer->ActivateDrawBuffers(1);
-  // No line was left anywhere yet: step -1 matches no draw.
   state->vtkglClearColor(1.0, -1.0, 0.0, 1.0);
-  for (vtkTextureObject* ends : { textures.LineEnds[0], textures.LineEnds[1] })
+  for (vtkTextureObject* ends : { pass.Textures.LineEnds[0], pass.Textures.LineEnds[1] })
   {
     Attach2D(0, ends);
     state->vtkglViewport(0, 0, all.Count[0], all.Count[1]);
     state->vtkglClear(GL_COLOR_BUFFER_BIT);
   }
-  int current = 0;
-  for (int first = 0; first < sweepDims[2]; first += kLineSlices)
-  {
-    const LineRange drawn =
-      LinesOf(pass.Grid, plan, light, first, std::min(first + kLineSlices, sweepDims[2]));
-    Attach2D(0, textures.LineEnds[current]);
-    state->vtkglViewport(
-      drawn.Lo[0] - all.Lo[0], drawn.Lo[1] - all.Lo[1], drawn.Count[0], drawn.Count[1]);
-    ScopedSampler start(program, "st_lineStart", textures.LineEnds[1 - current]);
-    program->SetUniformi("st_chunkFirst", first);
-    lines->Render();
-    current = 1 - current;
-  }
+}
+
+// The lines' draw of steps [@p first, first + kLineSlices) of the sweep (away from the light),
+// over the lines with a texel in the grid there; @p all: the lines of all the slices
+// (LinesOf), the lines' ends allocated for them. It leaves each line's end in
+// LineEnds[@p current] and takes it up from the other.
+void DrawLineChunk(const TransportPass& pass, vtkShaderProgram* program, vtkOpenGLQuadHelper* lines,
+  const vtkScattererTransportVolume::Light& light, const SweepPlan& plan, const int sweepDims[3],
+  const LineRange& all, int first, int current)
+{
+  TransportTextures& textures = pass.Textures;
+  const float origin[2] = { static_cast<float>(all.Lo[0]), static_cast<float>(all.Lo[1]) };
+  program->SetUniform2f("st_lineOrigin", origin);
+  program->SetUniformi("st_chunkSlices", kLineSlices);
+  program->SetUniformi("st_lineSlots", LineSlots(sweepDims));
+  program->SetUniformi("st_lines", 0); // image unit 0
+  program->SetUniformi("st_chunkFirst", first);
+  // The mean's draw before read the ring's slots that these stores overwrite.
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+  glBindImageTexture(0, textures.Lines->GetHandle(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG16F);
+  const LineRange drawn =
+    LinesOf(pass.Grid, plan, light, first, std::min(first + kLineSlices, sweepDims[2]));
+  pass.Framebuffer->ActivateDrawBuffers(1);
+  Attach2D(0, textures.LineEnds[current]);
+  pass.Window->GetState()->vtkglViewport(
+    drawn.Lo[0] - all.Lo[0], drawn.Lo[1] - all.Lo[1], drawn.Count[0], drawn.Count[1]);
+  ScopedSampler start(program, "st_lineStart", textures.LineEnds[1 - current]);
+  lines->Render();
   glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG16F);
   // The mean's draw reads what these stored.
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+}
+
+// The mean light (scatterer_transport_line_mean.glsl) of the sweep's slices @p lo to
+// @p hi (texture slices, inclusive), the grid's indices along plan.Axis: into those
+// layers of the transmittance texture (sweep order), or, @p arriving, added into the
+// arriving light (grid order, one texel more a side: the first and last slices take
+// the border beyond them), the lights after the @p firstLight blended on.
+void DrawLineMeans(const TransportPass& pass, vtkOpenGLQuadHelper* mean, vtkShaderProgram* program,
+  const SweepPlan& plan, const int sweepDims[3], int lo, int hi, bool arriving, bool firstLight)
+{
+  vtkOpenGLState* state = pass.Window->GetState();
+  program->SetUniformi("st_lineSlots", LineSlots(sweepDims));
+  if (!arriving)
+  {
+    state->vtkglViewport(0, 0, sweepDims[0], sweepDims[1]);
+    DrawLayersWhere(pass.Framebuffer, mean, program, { pass.Textures.Transmittance }, sweepDims[2],
+      [lo, hi](int z) { return z >= lo && z <= hi; });
+    return;
+  }
+  const int* dims = pass.Grid.Dims;
+  const int axis = plan.Axis;
+  const int from = lo == 0 ? 0 : lo + 1; // arriving texels: grid index + 1
+  const int to = hi == dims[axis] - 1 ? dims[axis] + 1 : hi + 1;
+  state->vtkglViewport(0, 0, dims[0] + 2, dims[1] + 2);
+  if (firstLight)
+  {
+    state->vtkglDisable(GL_BLEND);
+  }
+  else
+  {
+    BlendAdditively(state);
+  }
+  if (axis < 2)
+  {
+    state->vtkglEnable(GL_SCISSOR_TEST);
+    if (axis == 0)
+    {
+      state->vtkglScissor(from, 0, to - from + 1, dims[1] + 2);
+    }
+    else
+    {
+      state->vtkglScissor(0, from, dims[0] + 2, to - from + 1);
+    }
+  }
+  DrawLayersWhere(pass.Framebuffer, mean, program, { pass.Textures.Arriving }, dims[2] + 2,
+    [axis, from, to](int z) { return axis < 2 || (z >= from && z <= to); });
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->vtkglDisable(GL_BLEND);
 }
 }
 
@@ -230,30 +293,43 @@ bool SweepTransmittance(const TransportPass& pass, const vtkScattererTransportVo
     pass.Programs.SweepLines(pass.Window, enteringKind, arriving, lines, mean))
   {
     const LineRange range = LinesOf(pass.Grid, plan, light, 0, sweepDims[2]);
-    if (!textures.AllocateLines(pass.Window, sweepDims, range.Count, why) ||
+    const int ringDims[3] = { sweepDims[0], sweepDims[1], LineSlots(sweepDims) };
+    if (!textures.AllocateLines(pass.Window, ringDims, range.Count, why) ||
       (!arriving && !textures.AllocateSweep(pass.Window, sweepDims, false, why)))
     {
       return false;
     }
+    ClearLineEnds(pass, range);
+    // Texture slice z of step i: z = first + i * away (one run, away from the light).
+    const int firstSlice = plan.Runs.front().first;
+    const int away = plan.Runs.front().second >= firstSlice ? 1 : -1;
+    int current = 0;
+    for (int first = 0; first < sweepDims[2]; first += kMeanSlices)
     {
-      vtkShaderProgram* program = UseProgram(pass.Window, lines);
+      const int end = std::min(first + kMeanSlices, sweepDims[2]);
+      {
+        vtkShaderProgram* program = UseProgram(pass.Window, lines);
+        SweepBindings bindings(program, pass, light, plan, sweepDims, enteringTexture, enteringMap);
+        for (int chunk = first; chunk < end; chunk += kLineSlices)
+        {
+          DrawLineChunk(pass, program, lines, light, plan, sweepDims, range, chunk, current);
+          current = 1 - current;
+        }
+      }
+      const int last = end - 1;
+      const int a = firstSlice + first * away, b = firstSlice + last * away;
+      vtkShaderProgram* program = UseProgram(pass.Window, mean);
       SweepBindings bindings(program, pass, light, plan, sweepDims, enteringTexture, enteringMap);
-      DrawLines(pass, program, lines, light, plan, sweepDims, range);
+      ScopedSampler carried(program, "st_lines", textures.Lines);
+      if (arriving)
+      {
+        program->SetUniform3f("st_lightColor", light.Color);
+      }
+      DrawLineMeans(pass, mean, program, plan, sweepDims, std::min(a, b), std::max(a, b), arriving,
+        output == SweepOutput::ArrivingFirst);
+      DetachAll(pass.Framebuffer);
     }
-    vtkShaderProgram* program = UseProgram(pass.Window, mean);
-    SweepBindings bindings(program, pass, light, plan, sweepDims, enteringTexture, enteringMap);
-    ScopedSampler carried(program, "st_lines", textures.Lines);
-    if (arriving)
-    {
-      program->SetUniform3f("st_lightColor", light.Color);
-      DrawIntoArriving(pass, mean, program, output == SweepOutput::ArrivingFirst);
-      summed = true;
-    }
-    else
-    {
-      pass.Window->GetState()->vtkglViewport(0, 0, sweepDims[0], sweepDims[1]);
-      DrawLayers(pass.Framebuffer, mean, program, { textures.Transmittance }, sweepDims[2]);
-    }
+    summed = arriving;
     pass.Progress.StepDone();
   }
   else

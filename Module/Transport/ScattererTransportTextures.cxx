@@ -206,14 +206,14 @@ bool TransportTextures::AllocateSweep(
 }
 
 bool TransportTextures::AllocateLines(
-  vtkOpenGLRenderWindow* window, const int sweepDims[3], const int lineDims[2], std::string& why)
+  vtkOpenGLRenderWindow* window, const int ringDims[3], const int lineDims[2], std::string& why)
 {
-  if (!HasSize(this->Lines, sweepDims[0], sweepDims[1], sweepDims[2]))
+  if (!HasSize(this->Lines, ringDims[0], ringDims[1], ringDims[2]))
   {
     this->Lines = NewTransmittance(window);
     this->Lines->SetInternalFormat(GL_RG16F);
     this->Lines->SetFormat(GL_RG);
-    if (!this->Lines->Allocate3D(sweepDims[0], sweepDims[1], sweepDims[2], 2, VTK_FLOAT))
+    if (!this->Lines->Allocate3D(ringDims[0], ringDims[1], ringDims[2], 2, VTK_FLOAT))
     {
       this->Lines = nullptr;
       why = "the lines' texture could not be allocated";

@@ -55,7 +55,8 @@ struct TransportTextures
   vtkSmartPointer<vtkTextureObject> Transmittance; ///< R16F, sweep order
   vtkSmartPointer<vtkTextureObject> Slices[2];     ///< R16F, ping-pong of the sweep
   /// RG16F, sweep order: a directional light's lines swept in parallel, per texel T and
-  /// its mean factor (scatterer_transport_lines.glsl); its border reads 1
+  /// its mean factor (scatterer_transport_lines.glsl), a ring of the slices their mean
+  /// has yet to read and the slice before them (st_lineSlot); its border reads 1
   vtkSmartPointer<vtkTextureObject> Lines;
   /// RG32F, 2D, per line: T where a draw of the lines leaves it, and that step (ping-pong)
   vtkSmartPointer<vtkTextureObject> LineEnds[2];
@@ -92,10 +93,10 @@ struct TransportTextures
   bool AllocateSweep(
     vtkOpenGLRenderWindow* window, const int sweepDims[3], bool slices, std::string& why);
 
-  /** Lines of @p sweepDims and LineEnds of @p lineDims (the lines' draws); false with
-   * @p why set if refused. */
+  /** Lines of @p ringDims (a sweep's rows and columns, and the slices of its ring) and
+   * LineEnds of @p lineDims (the lines' draws); false with @p why set if refused. */
   bool AllocateLines(
-    vtkOpenGLRenderWindow* window, const int sweepDims[3], const int lineDims[2], std::string& why);
+    vtkOpenGLRenderWindow* window, const int ringDims[3], const int lineDims[2], std::string& why);
 
   /** The five coarse grids of @p dims, those the diffusion draws as atlases of @p atlas
    * texels; false with @p why set if refused. */

@@ -1,10 +1,10 @@
 //VTK::System::Dec
 //VTK::Output::Dec
 //============================================================================
-// Light transport volume, pass 1 for a directional light, second draw (all layers in
-// one): each texel's mean light, from what its line carried
-// (scatterer_transport_lines.glsl): the light entering it, read from the slice before
-// at q + e(z_q) where that slice holds T(q), times its mean factor; as
+// Light transport volume, pass 1 for a directional light, second draw (every few draws
+// of the lines, the layers of their slices): each texel's mean light, from what its
+// line carried (scatterer_transport_lines.glsl): the light entering it, read from the
+// slice before at q + e(z_q) where that slice holds T(q), times its mean factor; as
 // scatterer_transport_sweep.glsl computes it slice by slice.
 //
 // The value of a texel depends on nothing but the lines, so the draw may take the
@@ -18,7 +18,9 @@
 //VTK::Transport::Common
 //VTK::Transport::Sweep
 in vec2 texCoord;
-uniform sampler3D st_lines;      // per texel (T, mean factor), sweep order; its border reads 1
+// Per texel (T, mean factor), sweep order, a ring of slices (st_lineSlot); its border
+// reads 1.
+uniform sampler3D st_lines;
 flat in float st_layer;          // this layer (scatterer_transport_layers_gs.glsl)
 uniform vec3 st_lightColor;      // ST_LINE_MEAN_ARRIVING: E_l
 uniform float st_firstSlice;     // the sweep's first slice (nearest the light): T = 1
@@ -32,8 +34,10 @@ float st_lineMean(vec3 js)
   }
   vec3 qs = js + st_stepSweep;
   vec2 eq = st_sliceShift(qs.z, st_stepSweep.xy * st_stepSweep.z);
-  float Tq = texture(st_lines, (vec3(qs.xy + eq, qs.z) + vec3(0.5)) / st_sweepDims).r;
-  return Tq * texelFetch(st_lines, ivec3(js), 0).g;
+  vec3 ring = vec3(st_sweepDims.xy, float(st_lineSlots));
+  vec3 q = vec3(qs.xy + eq, float(st_lineSlot(qs.z)));
+  float Tq = texture(st_lines, (q + vec3(0.5)) / ring).r;
+  return Tq * texelFetch(st_lines, ivec3(ivec2(js.xy), st_lineSlot(js.z)), 0).g;
 }
 
 void main()

@@ -18,18 +18,20 @@
 // mean light takes from the light entering it (image load/store: one fragment writes
 // every slice of its line). The mean needs the light of the slice before between lines
 // (interpolated at q + e(z_q)), so a second, layered draw computes it
-// (scatterer_transport_line_mean.glsl). The lines go st_chunkSlices slices a draw, each
-// draw taking up T where the one before left it (st_lineStart) and covering only the
-// lines with a texel in the grid in its slices: the lines of an oblique light that cross
-// the grid somewhere are several times a slice's texels (2.5 times at 511x511x215 under
-// the benchmark's headlight), and a draw of them all ran most of them idle. A handful of
-// draws per light instead of one per slice: on a GPU a draw costs more than a slice's
-// fragments.
+// (scatterer_transport_line_mean.glsl) every few draws of the lines, for their slices
+// (the lines' texture holds those and the slice before them: st_lineSlot). The lines go
+// st_chunkSlices slices a draw, each draw taking up T where the one before left it
+// (st_lineStart) and covering only the lines with a texel in the grid in its slices: the
+// lines of an oblique light that cross the grid somewhere are several times a slice's
+// texels (2.5 times at 511x511x215 under the benchmark's headlight), and a draw of them
+// all ran most of them idle. A handful of draws per light instead of one per slice: on
+// a GPU a draw costs more than a slice's fragments.
 //============================================================================
 //VTK::Transport::Common
 //VTK::Transport::Sweep
 in vec2 texCoord;
-layout(rg16f) writeonly uniform image3D st_lines; // per texel (T, mean factor), sweep order
+// Per texel (T, mean factor), sweep order, a ring of slices (st_lineSlot).
+layout(rg16f) writeonly uniform image3D st_lines;
 uniform vec2 st_lineOrigin;     // the index k of pixel 0 (the draws cover what they need)
 uniform float st_firstSlice;    // the sweep's first slice (nearest the light)
 uniform int st_chunkFirst;      // this draw's slices: st_chunkFirst, ... (in sweep order)
@@ -71,7 +73,7 @@ void main()
       st_stepDepth(j, st_stepGrid, st_stepLength, tau, tauHalf);
       T *= st_stepFactors(tau, tauHalf, factor);
     }
-    imageStore(st_lines, ivec3(vec3(c, z)), vec4(T, factor, 0.0, 0.0));
+    imageStore(st_lines, ivec3(ivec2(c), st_lineSlot(z)), vec4(T, factor, 0.0, 0.0));
   }
   gl_FragData[0] = vec4(T, float(end), 0.0, 1.0);
 }

@@ -42,6 +42,17 @@ void st_stepTowardLight(vec3 toward, out vec3 stepSweep, out vec3 stepGrid, out 
   len = length(st_gridToWorld * stepGrid);
 }
 
+// A directional light's lines (scatterer_transport_lines.glsl) keep only the slices
+// their mean (scatterer_transport_line_mean.glsl) has yet to read: st_lineSlots of them,
+// a ring, slice z in layer z mod st_lineSlots. The mean follows every few draws of the
+// lines (kMeanSlices, ScattererTransportLightPasses.cxx), so the ring holds their slices
+// and the slice before them, not the whole sweep (4 bytes a transport voxel).
+uniform int st_lineSlots;
+int st_lineSlot(float z)
+{
+  return int(z) % st_lineSlots;
+}
+
 // A directional light's shift of slice z, e(z) = round(z a) - z a, with z the global
 // slice index and a the sideways step per slice (stepSweep.xy * stepSweep.z).
 vec2 st_sliceShift(float z, vec2 a)

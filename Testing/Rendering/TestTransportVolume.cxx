@@ -551,8 +551,8 @@ TEST(TransportVolume, DirectionalLinesSweptInParallelMatchTheSliceSweep)
     }
     ASSERT_EQ(sweeps[0].size(), static_cast<size_t>(n * n * n));
     ASSERT_EQ(sweeps[1].size(), sweeps[0].size());
-    // The lines' texture (RG16F, one texel per grid texel) is the parallel sweep's.
-    EXPECT_GE(bytes[1], bytes[0] + 4u * n * n * n) << "the lines were not swept in parallel";
+    // The lines' texture (RG16F, a ring of 33 slices here) is the parallel sweep's.
+    EXPECT_GE(bytes[1], bytes[0] + 4u * n * n * 16) << "the lines were not swept in parallel";
     float worst = 0.0f, shadowed = 1.0f;
     for (size_t i = 0; i < sweeps[0].size(); ++i)
     {
@@ -565,6 +565,44 @@ TEST(TransportVolume, DirectionalLinesSweptInParallelMatchTheSliceSweep)
     // Half floats: the slice sweep rounds the carried light to 11 bits at every slice.
     EXPECT_LT(worst, 4e-3f) << "toward (" << d[0] << ", " << d[1] << ", " << d[2] << ")";
   }
+}
+
+TEST(TransportVolume, LinesKeepARingOfSlicesNotTheWholeSweep)
+{
+  // The mean of a directional light's lines follows every 32 slices of them, so the
+  // lines' texture (RG16F, 4 bytes a texel) holds 33 slices, a ring, not the whole
+  // sweep: on 100 slices 33 slices of 4 n^2 bytes, plus the lines' ends (RG32F, twice,
+  // one texel a line: 6 more for this light's (100 + 30) x (100 + 20) lines), less the
+  // slice sweep's two R16F slices (1), where the whole sweep would add 100 + 6 - 1.
+  // The light the same as the slice sweep's over four parts of the ring, the last
+  // partial.
+  const int n = 100;
+  auto image = MakeVolume(n, 1.0, Slab(40, 45));
+  std::vector<float> sweeps[2];
+  size_t bytes[2];
+  for (int parallel = 0; parallel < 2; ++parallel)
+  {
+    TransportScene scene(image, 0.6);
+    scene.SetDirectional(0.3, 0.2, 1.0);
+    scene.Mapper->GetTransportVolume()->SetSweepLinesInParallel(parallel != 0);
+    sweeps[parallel] = scene.Transmittance();
+    bytes[parallel] = scene.GPUBytes;
+  }
+  ASSERT_EQ(sweeps[0].size(), static_cast<size_t>(n) * n * n);
+  ASSERT_EQ(sweeps[1].size(), sweeps[0].size());
+  const size_t added = bytes[1] - bytes[0], layer = 4u * n * n;
+  std::printf("the parallel sweep adds %zu bytes: %.1f slices of RG16F\n", added,
+    static_cast<double>(added) / static_cast<double>(layer));
+  EXPECT_GE(added, 17 * layer) << "the lines were not swept in parallel";
+  EXPECT_LE(added, 60 * layer) << "the lines' texture holds more than a ring of slices";
+  float worst = 0.0f, shadowed = 1.0f;
+  for (size_t i = 0; i < sweeps[0].size(); ++i)
+  {
+    worst = std::max(worst, std::abs(sweeps[1][i] - sweeps[0][i]));
+    shadowed = std::min(shadowed, sweeps[0][i]);
+  }
+  ASSERT_LT(shadowed, 0.05f) << "no shadow: the test sees little";
+  EXPECT_LT(worst, 4e-3f) << "the ring's light is not the slice sweep's";
 }
 
 TEST(TransportVolume, ClippedCroppedOrMaskedOccluderCastsNoShadow)
@@ -879,8 +917,10 @@ TEST(TransportVolume, LightsAddUpWhateverTheirOrder)
   // build of one directional light reads it from its transmittance. Three lights give
   // the sum of each alone, in any order: a spot light's cone and attenuation count the
   // same first or last. Both with the directional lights' lines swept in parallel and
-  // slice by slice (OpenGL without image load/store).
-  const int n = 24;
+  // slice by slice (OpenGL without image load/store). 40 slices: a directional light's
+  // lines go 32 slices before their mean, so each light's mean is drawn in two parts,
+  // along z (layers of the arriving light) and along x (columns).
+  const int n = 40;
   auto image = MakeVolume(n, 1.0, Slab(6, 17));
   const double c = 0.5 * (n - 1);
   const auto directional = [c](double x, double y, double z, double r, double g, double b)
@@ -895,7 +935,7 @@ TEST(TransportVolume, LightsAddUpWhateverTheirOrder)
   auto spot = vtkSmartPointer<vtkLight>::New();
   spot->SetLightTypeToSceneLight();
   spot->SetPositional(true);
-  spot->SetPosition(c + 4, c, 40.0);
+  spot->SetPosition(c + 4, c, n + 16.0);
   spot->SetFocalPoint(c + 4, c, 0.0);
   spot->SetConeAngle(25.0);
   spot->SetAttenuationValues(1.0, 0.02, 0.0);
