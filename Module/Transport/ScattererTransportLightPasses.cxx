@@ -300,7 +300,8 @@ bool SweepTransmittance(const TransportPass& pass, const vtkScattererTransportVo
       return false;
     }
     ClearLineEnds(pass, range);
-    // Texture slice z of step i: z = first + i * away (one run, away from the light).
+    // Step i of the sweep is texture slice firstSlice + i * away (one run, away from the
+    // light); the lines and their mean go kMeanSlices steps at a time.
     const int firstSlice = plan.Runs.front().first;
     const int away = plan.Runs.front().second >= firstSlice ? 1 : -1;
     int current = 0;
