@@ -82,14 +82,30 @@ private:
   ScopedSampler DepthInFront;
 };
 
-// Draws @p quad (the light one light brings) into every layer of the arriving light,
-// which has one texel more than the grid on each side. The lights add up: the @p first
+// Texels of the arriving light (one more than the grid on each side) whose grid index
+// along Axis lies in [Lo, Hi], the texture's border taken with the first and last grid
+// slices; by default all of them.
+struct ArrivingSlab
+{
+  int Axis = 2;
+  int Lo = 0;
+  int Hi = -1; // below Lo: every texel
+};
+
+// Draws @p quad (the light one light brings) into the arriving light, which has one
+// texel more than the grid on each side: its texels of @p slab, a range of layers along
+// z, of columns or rows (the scissor test) along x or y. The lights add up: the @p first
 // replaces what the texture holds, the others blend on.
-void DrawIntoArriving(
-  const TransportPass& pass, vtkOpenGLQuadHelper* quad, vtkShaderProgram* program, bool first)
+void DrawIntoArriving(const TransportPass& pass, vtkOpenGLQuadHelper* quad,
+  vtkShaderProgram* program, bool first, const ArrivingSlab& slab = ArrivingSlab())
 {
   vtkOpenGLState* state = pass.Window->GetState();
-  state->vtkglViewport(0, 0, pass.Grid.Dims[0] + 2, pass.Grid.Dims[1] + 2);
+  const int* dims = pass.Grid.Dims;
+  const int n = dims[slab.Axis];
+  const bool whole = slab.Hi < slab.Lo;
+  const int from = whole || slab.Lo == 0 ? 0 : slab.Lo + 1; // texel: grid index + 1
+  const int to = whole || slab.Hi == n - 1 ? n + 1 : slab.Hi + 1;
+  state->vtkglViewport(0, 0, dims[0] + 2, dims[1] + 2);
   if (first)
   {
     state->vtkglDisable(GL_BLEND);
@@ -98,7 +114,22 @@ void DrawIntoArriving(
   {
     BlendAdditively(state);
   }
-  DrawLayers(pass.Framebuffer, quad, program, { pass.Textures.Arriving }, pass.Grid.Dims[2] + 2);
+  if (!whole && slab.Axis < 2)
+  {
+    state->vtkglEnable(GL_SCISSOR_TEST);
+    if (slab.Axis == 0)
+    {
+      state->vtkglScissor(from, 0, to - from + 1, dims[1] + 2);
+    }
+    else
+    {
+      state->vtkglScissor(0, from, dims[0] + 2, to - from + 1);
+    }
+  }
+  const int axis = slab.Axis;
+  DrawLayersWhere(pass.Framebuffer, quad, program, { pass.Textures.Arriving }, dims[2] + 2,
+    [axis, from, to](int z) { return axis < 2 || (z >= from && z <= to); });
+  state->vtkglDisable(GL_SCISSOR_TEST);
   state->vtkglDisable(GL_BLEND);
 }
 
@@ -229,35 +260,11 @@ void DrawLineMeans(const TransportPass& pass, vtkOpenGLQuadHelper* mean, vtkShad
       [lo, hi](int z) { return z >= lo && z <= hi; });
     return;
   }
-  const int* dims = pass.Grid.Dims;
-  const int axis = plan.Axis;
-  const int from = lo == 0 ? 0 : lo + 1; // arriving texels: grid index + 1
-  const int to = hi == dims[axis] - 1 ? dims[axis] + 1 : hi + 1;
-  state->vtkglViewport(0, 0, dims[0] + 2, dims[1] + 2);
-  if (firstLight)
-  {
-    state->vtkglDisable(GL_BLEND);
-  }
-  else
-  {
-    BlendAdditively(state);
-  }
-  if (axis < 2)
-  {
-    state->vtkglEnable(GL_SCISSOR_TEST);
-    if (axis == 0)
-    {
-      state->vtkglScissor(from, 0, to - from + 1, dims[1] + 2);
-    }
-    else
-    {
-      state->vtkglScissor(0, from, dims[0] + 2, to - from + 1);
-    }
-  }
-  DrawLayersWhere(pass.Framebuffer, mean, program, { pass.Textures.Arriving }, dims[2] + 2,
-    [axis, from, to](int z) { return axis < 2 || (z >= from && z <= to); });
-  state->vtkglDisable(GL_SCISSOR_TEST);
-  state->vtkglDisable(GL_BLEND);
+  ArrivingSlab slab;
+  slab.Axis = plan.Axis;
+  slab.Lo = lo;
+  slab.Hi = hi;
+  DrawIntoArriving(pass, mean, program, firstLight, slab);
 }
 }
 
