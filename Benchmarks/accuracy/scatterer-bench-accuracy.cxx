@@ -1,7 +1,8 @@
 // The accuracy / time trade-off benchmark (docs/accuracy.md; not part of the tests).
 //
-// For each scene (the CT head at a reduced size, the synthetic shell + plate scene, and
-// the same lit by a point light):
+// For each scene (the CT head at a reduced size, the same under vtkLightKit's five lights
+// (ParaView's default lighting), the synthetic shell + plate scene, and the same lit by a
+// point light):
 // renders the converged Monte Carlo reference (Reference; cached in OUT as
 // reference-<scene>-<spp>spp.vti), then every GPU configuration (stock composite, stock
 // Phong, template illumination over a quality ladder, a brute-force template setting)
@@ -239,8 +240,12 @@ void ExportScene(const scatterer_reference_vtk::VtkScene& scene, int width, int 
   bool first = true;
   while (vtkLight* l = lights->GetNextItem())
   {
-    double* lp = l->GetPosition();
-    double* lf = l->GetFocalPoint();
+    if (!l->GetSwitch())
+    {
+      continue;
+    }
+    double lp[3], lf[3]; // written as scene lights: where VTK puts them for this camera
+    scatterer_reference_vtk::WorldLight(l, cam, lp, lf);
     double* dc = l->GetDiffuseColor();
     f << (first ? "" : ", ") << "{\"positional\": " << (l->GetPositional() ? "true" : "false")
       << ", \"position\": [" << lp[0] << ", " << lp[1] << ", " << lp[2] << "], \"focal_point\": ["
@@ -366,8 +371,9 @@ void WritePlot(const std::vector<Row>& rows, const std::string& scene, const std
 int main(int argc, char* argv[])
 {
   int frames = 3, width = 256, height = 256, spp = 1024;
-  std::string out = "accuracy-benchmark", scenes = "ct-head,shell-plate,shell-plate-point", only,
-              peerPython, peerScript;
+  std::string out = "accuracy-benchmark",
+              scenes = "ct-head,ct-head-light-kit,shell-plate,shell-plate-point", only, peerPython,
+              peerScript;
   for (int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
@@ -390,7 +396,8 @@ int main(int argc, char* argv[])
     else
     {
       std::cerr << "usage: scatterer-bench-accuracy [--size WxH] [--frames N] [--spp N] "
-                   "[--scenes ct-head,shell-plate,shell-plate-point] [--configs a,b] [--out DIR]\n"
+                   "[--scenes ct-head,ct-head-light-kit,shell-plate,shell-plate-point] [--configs "
+                   "a,b] [--out DIR]\n"
                    "         [--peer-python 'PYTHONPATH=... /usr/bin/python3' --peer-script "
                    "vtk92_scattering_peer.py]\n";
       return 2;

@@ -9,6 +9,8 @@
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
+#include "vtkLightKit.h"
+#include "vtkMatrix4x4.h"
 #include "vtkMetaImageWriter.h"
 #include "vtkNew.h"
 #include "vtkPNGWriter.h"
@@ -41,6 +43,51 @@ bool MakeCtHeadScene(VtkScene& scene, std::string* error)
   scatterer_examples::ApplyCtHeadLight(scene.Renderer);
   scene.SampleDistance = 0.5;
   return true;
+}
+
+bool MakeCtHeadLightKitScene(VtkScene& scene, std::string* error)
+{
+  if (!MakeCtHeadScene(scene, error))
+  {
+    return false;
+  }
+  scene.Name = "ct-head-light-kit";
+  ApplyLightKit(scene.Renderer);
+  return true;
+}
+
+void ApplyLightKit(vtkRenderer* renderer)
+{
+  renderer->AutomaticLightCreationOff();
+  renderer->RemoveAllLights();
+  vtkNew<vtkLightKit> kit;
+  kit->AddLightsToRenderer(renderer);
+}
+
+void WorldLight(vtkLight* light, vtkCamera* camera, double position[3], double focalPoint[3])
+{
+  if (light->LightTypeIsHeadlight())
+  {
+    camera->GetPosition(position);
+    camera->GetFocalPoint(focalPoint);
+    return;
+  }
+  light->GetPosition(position);
+  light->GetFocalPoint(focalPoint);
+  if (light->LightTypeIsCameraLight())
+  {
+    vtkMatrix4x4* toWorld = camera->GetCameraLightTransformMatrix();
+    for (double* point : { position, focalPoint })
+    {
+      const double in[4] = { point[0], point[1], point[2], 1.0 };
+      double out[4];
+      toWorld->MultiplyPoint(in, out);
+      for (int i = 0; i < 3; ++i)
+      {
+        point[i] = out[i] / out[3];
+      }
+    }
+  }
 }
 
 void MakeHardScene(VtkScene& scene, int n)
@@ -208,16 +255,7 @@ scatterer_reference::Scene Convert(vtkImageData* image, vtkVolumeProperty* prope
     if (!l->GetSwitch())
       continue;
     double lp[3], lf[3], dc[3];
-    if (l->LightTypeIsSceneLight())
-    {
-      l->GetPosition(lp);
-      l->GetFocalPoint(lf);
-    }
-    else // headlight / camera light: take the camera's frame (a headlight sits at the camera)
-    {
-      cam->GetPosition(lp);
-      cam->GetFocalPoint(lf);
-    }
+    WorldLight(l, cam, lp, lf);
     l->GetDiffuseColor(dc);
     const glm::dvec3 colour = glm::dvec3(dc[0], dc[1], dc[2]) * l->GetIntensity();
     if (l->GetPositional())
@@ -341,18 +379,24 @@ bool WriteFloatImage(vtkImageData* image, const std::string& path)
   return w->Write() == 1;
 }
 
-const char* const kNamedScenes = "ct-head, shell-plate or shell-plate-point";
+const char* const kNamedScenes = "ct-head, ct-head-light-kit, shell-plate or shell-plate-point";
+
+bool IsCtHeadScene(const std::string& name)
+{
+  return name == "ct-head" || name == "ct-head-light-kit";
+}
 
 bool IsNamedScene(const std::string& name)
 {
-  return name == "ct-head" || name == "shell-plate" || name == "shell-plate-point";
+  return IsCtHeadScene(name) || name == "shell-plate" || name == "shell-plate-point";
 }
 
 bool MakeNamedScene(const std::string& name, VtkScene& scene, std::string& error, int& exitCode)
 {
-  if (name == "ct-head")
+  if (IsCtHeadScene(name))
   {
-    if (!MakeCtHeadScene(scene, &error))
+    if (!(name == "ct-head" ? MakeCtHeadScene(scene, &error)
+                            : MakeCtHeadLightKitScene(scene, &error)))
     {
       error += "\nPrepare the CT head with: bash scripts/prepare-data.sh";
       exitCode = 1;

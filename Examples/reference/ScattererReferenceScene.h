@@ -10,8 +10,9 @@
 // - table: `tableSize` entries over the scalar range; sigma_t = -ln(1 - alpha) / u with
 //   alpha the scalar opacity TF and u its ScalarOpacityUnitDistance; albedo = the colour
 //   TF's colour (times `albedoScale`);
-// - lights that are switched on: directional (scene, camera or headlight; toLight =
-//   position - focal point in world space) with irradiance intensity x diffuse colour;
+// - lights that are switched on, where VTK's renderer puts them (WorldLight): directional
+//   (toLight = position - focal point in world space) with irradiance intensity x diffuse
+//   colour;
 //   positional lights become point lights (VTK's default attenuation (1,0,0) means no
 //   distance falloff, which is kept; spot cones are ignored).
 // - camera: position, focal point, view up, view angle (perspective only).
@@ -25,7 +26,9 @@
 #include <string>
 #include <vector>
 
+class vtkCamera;
 class vtkImageData;
+class vtkLight;
 class vtkRenderer;
 class vtkVolumeProperty;
 
@@ -43,6 +46,24 @@ struct VtkScene
 /** The CT head scene (the prepared volume, ct-head.json). False with @p error if missing. */
 bool MakeCtHeadScene(VtkScene& scene, std::string* error);
 
+/** The CT head scene lit as ParaView lights a view by default: vtkLightKit's five lights
+ * (key, fill, two back lights and a head light, at vtkLightKit's defaults, which are
+ * ParaView's), all following the camera, instead of the one scene light. Its name is
+ * "ct-head-light-kit". False with @p error if the CT head is missing. */
+bool MakeCtHeadLightKitScene(VtkScene& scene, std::string* error);
+
+/** Replaces @p renderer's lights by vtkLightKit's five, at its defaults (ParaView's). */
+void ApplyLightKit(vtkRenderer* renderer);
+
+/**
+ * Where VTK's renderer puts @p light for @p camera, in world coordinates (what
+ * vtkRenderer::UpdateLightsGeometryToFollowCamera does before a frame): a scene light as
+ * given, a headlight at the camera looking at its focal point, a camera light's position
+ * and focal point (given in the camera's frame: the camera at (0, 0, 1) looking at the
+ * origin, y up) through the camera's light transform.
+ */
+void WorldLight(vtkLight* light, vtkCamera* camera, double position[3], double focalPoint[3]);
+
 /** The synthetic hard scene: 96^3, a thin shell (material A, red) behind a thin plate
  * (material B, white) that shadows it from a directional light. Another @p n samples
  * the same world-space scene (box [0, 95]^3, same camera and light) on an n^3 grid
@@ -53,13 +74,16 @@ void MakeHardScene(VtkScene& scene, int n = 96);
  * box behind the plate: its name is "shell-plate-point" ("shell-plate-point-<n>"). */
 void MakeHardPointLightScene(VtkScene& scene, int n = 96);
 
-/** The named scenes MakeNamedScene knows, in words: "ct-head, shell-plate or
- * shell-plate-point". */
+/** The named scenes MakeNamedScene knows, in words: "ct-head, ct-head-light-kit,
+ * shell-plate or shell-plate-point". */
 extern const char* const kNamedScenes;
 
-/** True when @p name is one of kNamedScenes; the others but "ct-head" are built in
- * (synthetic volumes, no file to read). */
+/** True when @p name is one of kNamedScenes. */
 bool IsNamedScene(const std::string& name);
+
+/** True when @p name is a named scene of the prepared CT head, which scatterer-reference
+ * also lays over another volume (--input); the others are built in (synthetic volumes). */
+bool IsCtHeadScene(const std::string& name);
 
 /**
  * One of kNamedScenes: fills @p scene. On failure returns false with @p error saying why

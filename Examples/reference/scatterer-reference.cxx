@@ -71,6 +71,7 @@ int ParseArgs(
   CLI::Option* scene = scatterer_examples::AddValueOption(app, "--scene", "SCENE",
     "ct-head (default: the prepared CT head, " + scatterer_examples::CtHeadPath() +
       ",\nmade by scripts/prepare-data.sh in the source tree, or --input in that scene),\n"
+      "ct-head-light-kit (the same lit by vtkLightKit, ParaView's default lighting),\n"
       "shell-plate (synthetic), shell-plate-point (lit by a point light), or auto (--input\n"
       "with automatic transfer functions)",
     [&o](const std::string& v)
@@ -83,7 +84,7 @@ int ParseArgs(
       o.Scene = v;
     });
   CLI::Option* input = scatterer_examples::AddValueOption(app, "--input", "VOLUME",
-    "volume file, DICOM folder or one file of a DICOM series, in the ct-head scene or --scene auto",
+    "volume file, DICOM folder or one file of a DICOM series, in a ct-head scene or --scene auto",
     [&o](const std::string& v) { o.Input = v; });
   scatterer_examples::AddValueOption(app, "--size", "WxH",
     "image size, 16..8192 each (default 256x256)",
@@ -121,11 +122,13 @@ int ParseArgs(
   app.callback(
     [&]()
     {
-      const bool builtIn = scatterer_reference_vtk::IsNamedScene(o.Scene) && o.Scene != "ct-head";
+      const bool builtIn = scatterer_reference_vtk::IsNamedScene(o.Scene) &&
+        !scatterer_reference_vtk::IsCtHeadScene(o.Scene);
       if (builtIn && input->count() > 0)
       {
         scatterer_examples::ThrowConflict("--scene " + o.Scene, "--input",
-          o.Scene + " is a built-in volume; for a file use --scene ct-head or auto");
+          o.Scene +
+            " is a built-in volume; for a file use --scene ct-head, ct-head-light-kit or auto");
       }
       if (o.Scene == "auto" && scene->count() > 0 && input->count() == 0)
       {
@@ -167,11 +170,18 @@ int main(int argc, char* argv[])
     }
     scene.Property = vtkSmartPointer<vtkVolumeProperty>::New();
     scene.Renderer = vtkSmartPointer<vtkRenderer>::New();
-    if (sceneName == "ct-head")
+    if (scatterer_reference_vtk::IsCtHeadScene(sceneName))
     {
       scatterer_examples::ApplyCtHeadProperty(scene.Property);
       scatterer_examples::ApplyCtHeadCamera(scene.Renderer);
-      scatterer_examples::ApplyCtHeadLight(scene.Renderer);
+      if (sceneName == "ct-head-light-kit")
+      {
+        scatterer_reference_vtk::ApplyLightKit(scene.Renderer);
+      }
+      else
+      {
+        scatterer_examples::ApplyCtHeadLight(scene.Renderer);
+      }
     }
     else
     {
