@@ -66,9 +66,8 @@ TEST(ReferenceSceneLights, LightKitLightsComeFromWhereTheCameraCarriesThem)
   {
     const glm::dvec3 got = converted.directionalLights[i].toLight;
     EXPECT_NEAR(glm::length(got - expected[i]), 0.0, 1e-9)
-      << "light " << i << ": toward (" << got.x << ", " << got.y << ", " << got.z
-      << "), expected (" << expected[i].x << ", " << expected[i].y << ", " << expected[i].z
-      << ")";
+      << "light " << i << ": toward (" << got.x << ", " << got.y << ", " << got.z << "), expected ("
+      << expected[i].x << ", " << expected[i].y << ", " << expected[i].z << ")";
     awayFromTheCamera += glm::dot(expected[i], back) < std::cos(glm::radians(30.0)) ? 1 : 0;
   }
   // The key, fill and back lights lie 40 degrees and more off the view direction.

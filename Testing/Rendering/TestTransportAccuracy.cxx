@@ -5,13 +5,15 @@
 // plate shadows the shell from the light, a directional one and a point light: Phong
 // has no shadows, so a transport that lost them (a broken sweep, no occlusion) fails
 // here. It does not guard the multiple-scattering term: without it the transport is even
-// closer on this scene.
+// closer on this scene. Under the light kit (five camera lights) it also guards where
+// the mapper places each light and that it adds them up.
 #include "Common/ScattererMapperSetup.h"
 #include "ScattererReferenceScene.h"
 #include "ScattererRenderHarness.h"
 #include "scatterer_reference/Metrics.h"
 #include "scatterer_reference/PathTracer.h"
 
+#include "vtkCamera.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkOpenGLGPUVolumeRayCastMapper.h"
@@ -110,7 +112,8 @@ Reference RenderReference(const scatterer_reference_vtk::VtkScene& scene)
 }
 
 // The defaults against stock Phong on @p scene, both against the reference.
-void ExpectDefaultsBeatStockPhong(const scatterer_reference_vtk::VtkScene& scene)
+void ExpectDefaultsBeatStockPhong(
+  const scatterer_reference_vtk::VtkScene& scene, double maxRmseRatio = 0.7)
 {
   const Reference reference = RenderReference(scene);
   ASSERT_GT(reference.Peak, 0.0) << "the reference is black";
@@ -139,8 +142,8 @@ void ExpectDefaultsBeatStockPhong(const scatterer_reference_vtk::VtkScene& scene
   // does not carry the light from slice to slice 1.30 x (0.929): 0.7 holds with room
   // and fails on a lighting that lost the plate's shadow. (MultipleScattering 0: 0.45 x.)
   // Under the point light: 0.58 x, SSIM 0.985 vs 0.951; a positional sweep that does not
-  // carry the light from slice to slice 1.20 x (0.940).
-  EXPECT_LE(mt.rmse, 0.7 * mp.rmse) << "the transport is not clearly closer than Phong";
+  // carry the light from slice to slice 1.20 x (0.940). Under the light kit: below.
+  EXPECT_LE(mt.rmse, maxRmseRatio * mp.rmse) << "the transport is not clearly closer than Phong";
   EXPECT_GT(mt.ssim, mp.ssim) << "the transport is not structurally closer than Phong";
 }
 }
@@ -159,4 +162,24 @@ TEST(TransportAccuracy, DefaultsBeatStockPhongUnderAPointLight)
   scatterer_reference_vtk::VtkScene scene;
   scatterer_reference_vtk::MakeHardPointLightScene(scene, kGrid);
   ExpectDefaultsBeatStockPhong(scene);
+}
+
+// The same scene under ParaView's default lighting, vtkLightKit's five lights that follow
+// the camera (key, fill, head and two back lights, coloured by their warmth): every light
+// placed where the renderer puts it, swept and added up, against the reference lit the
+// same way (ScattererReferenceScene's WorldLight).
+TEST(TransportAccuracy, DefaultsBeatStockPhongUnderTheLightKit)
+{
+  scatterer_reference_vtk::VtkScene scene;
+  scatterer_reference_vtk::MakeHardScene(scene, kGrid);
+  scatterer_reference_vtk::ApplyLightKit(scene.Renderer);
+  // The view rolled so that the key light (50 degrees above the view direction) comes
+  // from -x, as the scene's own light does: through the plate onto the shell.
+  scene.Renderer->GetActiveCamera()->SetViewUp(-1.0, 0.0, 0.3);
+  // Measured (llvmpipe): 0.83 x Phong's RMSE, SSIM 0.990 vs 0.983 (the head and fill
+  // lights light what the camera sees, as Phong does). Camera lights taken in the
+  // camera's frame instead of the world's (the lights' untransformed positions):
+  // 1.47 x, SSIM 0.971. Without the roll the key light misses the plate and that bug
+  // measured 0.90 x against 0.86 x.
+  ExpectDefaultsBeatStockPhong(scene, 0.9);
 }
