@@ -627,6 +627,25 @@ void ExpectUsageError(
 }
 }
 
+#ifdef SCATTERER_REFERENCE_EXE
+// scatterer-reference lays both CT head scenes (one light, the light kit) over a volume
+// given with --input, and refuses --input for a built-in synthetic scene.
+TEST_F(Cli, ReferenceTakesAnInputInTheCtHeadScenesOnly)
+{
+  const std::string input = this->WriteMetaImage("ball", Ball());
+  const Result builtIn =
+    RunProgram(SCATTERER_REFERENCE_EXE, { "--scene", "shell-plate", "--input", input });
+  ExpectUsageError(
+    builtIn, SCATTERER_REFERENCE_EXE, { "--scene shell-plate", "--input", "built-in" });
+  const std::string prefix = (this->Dir / "ball-light-kit").string();
+  const Result lightKit = RunProgram(SCATTERER_REFERENCE_EXE,
+    { "--scene", "ct-head-light-kit", "--input", input, "--size", "16x16", "--spp", "1", "--quiet",
+      "--output", prefix });
+  EXPECT_EQ(lightKit.Status, 0) << lightKit.Output;
+  EXPECT_TRUE(fs::exists(prefix + ".vti")) << lightKit.Output;
+}
+#endif
+
 // --opt=value means what --opt value means, in both programs.
 TEST_F(Cli, OptionEqualsValueIsAccepted)
 {
