@@ -235,6 +235,8 @@ void ExportScene(const scatterer_reference_vtk::VtkScene& scene, int width, int 
     << "], \"focal_point\": [" << fp[0] << ", " << fp[1] << ", " << fp[2] << "], \"view_up\": ["
     << up[0] << ", " << up[1] << ", " << up[2] << "], \"view_angle\": " << cam->GetViewAngle()
     << ", \"clipping_range\": [" << cr[0] << ", " << cr[1] << "]},\n \"lights\": [";
+  // Written as scene lights, where the renderer puts them for this camera.
+  scene.Renderer->UpdateLightsGeometryToFollowCamera();
   vtkLightCollection* lights = scene.Renderer->GetLights();
   lights->InitTraversal();
   bool first = true;
@@ -244,8 +246,9 @@ void ExportScene(const scatterer_reference_vtk::VtkScene& scene, int width, int 
     {
       continue;
     }
-    double lp[3], lf[3]; // written as scene lights: where VTK puts them for this camera
-    scatterer_reference_vtk::WorldLight(l, cam, lp, lf);
+    double lp[3], lf[3];
+    l->GetTransformedPosition(lp);
+    l->GetTransformedFocalPoint(lf);
     double* dc = l->GetDiffuseColor();
     f << (first ? "" : ", ") << "{\"positional\": " << (l->GetPositional() ? "true" : "false")
       << ", \"position\": [" << lp[0] << ", " << lp[1] << ", " << lp[2] << "], \"focal_point\": ["

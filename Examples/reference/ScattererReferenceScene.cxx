@@ -10,7 +10,6 @@
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkLightKit.h"
-#include "vtkMatrix4x4.h"
 #include "vtkMetaImageWriter.h"
 #include "vtkNew.h"
 #include "vtkPNGWriter.h"
@@ -62,32 +61,6 @@ void ApplyLightKit(vtkRenderer* renderer)
   renderer->RemoveAllLights();
   vtkNew<vtkLightKit> kit;
   kit->AddLightsToRenderer(renderer);
-}
-
-void WorldLight(vtkLight* light, vtkCamera* camera, double position[3], double focalPoint[3])
-{
-  if (light->LightTypeIsHeadlight())
-  {
-    camera->GetPosition(position);
-    camera->GetFocalPoint(focalPoint);
-    return;
-  }
-  light->GetPosition(position);
-  light->GetFocalPoint(focalPoint);
-  if (light->LightTypeIsCameraLight())
-  {
-    vtkMatrix4x4* toWorld = camera->GetCameraLightTransformMatrix();
-    for (double* point : { position, focalPoint })
-    {
-      const double in[4] = { point[0], point[1], point[2], 1.0 };
-      double out[4];
-      toWorld->MultiplyPoint(in, out);
-      for (int i = 0; i < 3; ++i)
-      {
-        point[i] = out[i] / out[3];
-      }
-    }
-  }
 }
 
 void MakeHardScene(VtkScene& scene, int n)
@@ -248,6 +221,9 @@ scatterer_reference::Scene Convert(vtkImageData* image, vtkVolumeProperty* prope
   scene.camera.viewAngleDeg = cam->GetViewAngle();
   scene.camera.width = width;
   scene.camera.height = height;
+  // Headlights and camera lights where the renderer puts them before a frame (camera
+  // lights are given in the camera's frame): their transformed position and focal point.
+  renderer->UpdateLightsGeometryToFollowCamera();
   vtkLightCollection* lights = renderer->GetLights();
   lights->InitTraversal();
   while (vtkLight* l = lights->GetNextItem())
@@ -255,7 +231,8 @@ scatterer_reference::Scene Convert(vtkImageData* image, vtkVolumeProperty* prope
     if (!l->GetSwitch())
       continue;
     double lp[3], lf[3], dc[3];
-    WorldLight(l, cam, lp, lf);
+    l->GetTransformedPosition(lp);
+    l->GetTransformedFocalPoint(lf);
     l->GetDiffuseColor(dc);
     const glm::dvec3 colour = glm::dvec3(dc[0], dc[1], dc[2]) * l->GetIntensity();
     if (l->GetPositional())

@@ -10,7 +10,8 @@
 // - table: `tableSize` entries over the scalar range; sigma_t = -ln(1 - alpha) / u with
 //   alpha the scalar opacity TF and u its ScalarOpacityUnitDistance; albedo = the colour
 //   TF's colour (times `albedoScale`);
-// - lights that are switched on, where VTK's renderer puts them (WorldLight): directional
+// - lights that are switched on, where VTK's renderer puts them before a frame
+//   (vtkRenderer::UpdateLightsGeometryToFollowCamera, which this calls): directional
 //   (toLight = position - focal point in world space) with irradiance intensity x diffuse
 //   colour;
 //   positional lights become point lights (VTK's default attenuation (1,0,0) means no
@@ -26,9 +27,7 @@
 #include <string>
 #include <vector>
 
-class vtkCamera;
 class vtkImageData;
-class vtkLight;
 class vtkRenderer;
 class vtkVolumeProperty;
 
@@ -54,15 +53,6 @@ bool MakeCtHeadLightKitScene(VtkScene& scene, std::string* error);
 
 /** Replaces @p renderer's lights by vtkLightKit's five, at its defaults (ParaView's). */
 void ApplyLightKit(vtkRenderer* renderer);
-
-/**
- * Where VTK's renderer puts @p light for @p camera, in world coordinates (what
- * vtkRenderer::UpdateLightsGeometryToFollowCamera does before a frame): a scene light as
- * given, a headlight at the camera looking at its focal point, a camera light's position
- * and focal point (given in the camera's frame: the camera at (0, 0, 1) looking at the
- * origin, y up) through the camera's light transform.
- */
-void WorldLight(vtkLight* light, vtkCamera* camera, double position[3], double focalPoint[3]);
 
 /** The synthetic hard scene: 96^3, a thin shell (material A, red) behind a thin plate
  * (material B, white) that shadows it from a directional light. Another @p n samples

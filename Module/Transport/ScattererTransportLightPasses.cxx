@@ -335,7 +335,6 @@ bool SweepTransmittance(const TransportPass& pass, const vtkScattererTransportVo
       }
       DrawLineMeans(pass, mean, program, plan, sweepDims, std::min(a, b), std::max(a, b), arriving,
         output == SweepOutput::ArrivingFirst);
-      DetachAll(pass.Framebuffer);
     }
     summed = arriving;
     pass.Progress.StepDone();

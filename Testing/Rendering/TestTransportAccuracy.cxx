@@ -167,7 +167,7 @@ TEST(TransportAccuracy, DefaultsBeatStockPhongUnderAPointLight)
 // The same scene under ParaView's default lighting, vtkLightKit's five lights that follow
 // the camera (key, fill, head and two back lights, coloured by their warmth): every light
 // placed where the renderer puts it, swept and added up, against the reference lit the
-// same way (ScattererReferenceScene's WorldLight).
+// same way (Convert, ScattererReferenceScene).
 TEST(TransportAccuracy, DefaultsBeatStockPhongUnderTheLightKit)
 {
   scatterer_reference_vtk::VtkScene scene;
