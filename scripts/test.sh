@@ -15,11 +15,13 @@ status=0
 # parallel load (EAGAIN; VTK then aborts) gets one more try; real failures repeat.
 bash scripts/xvfb.sh ctest --test-dir "${BUILD_DIR:-build}" --output-on-failure -j 2 \
   --repeat until-pass:2 "$@" || status=1
-# The ParaView plugin's pvbatch tests (1 and 2 MPI ranks; label "paraview"). Under Xvfb
-# one rank's X connection is sometimes refused (pvbatch aborts in CreateAWindow before any
-# check) or a two-rank run hangs until its 120 s timeout: measured 2 of 40 runs once, but
-# a two-rank case failed in 3 of the 5 CI runs of 2026-11-30 and once 3 times in a row
-# (abort, hang, abort). Up to five more tries; a real failure repeats every time.
+# The ParaView plugin's pvbatch tests (1, 2 and 4 MPI ranks; label "paraview"). Under Xvfb
+# one rank's X connection is sometimes refused: pvbatch aborts in CreateAWindow before any
+# check, or, where a rank of several comes up without its display, ParaView finds remote
+# rendering unavailable and would wait forever in its first render (pvbatch_test.py ends
+# such a run at once; until 2026-12-06 it hung until the 120 s timeout, five times in a
+# row in one CI run). Measured 2 of 40 runs once, but a two-rank case failed in 3 of the 5
+# CI runs of 2026-11-30. Up to five more tries; a real failure repeats every time.
 bash scripts/xvfb.sh ctest --test-dir "${PV_BUILD_DIR:-build-paraview}" --output-on-failure \
   --repeat until-pass:6 "$@" || status=1
 exit $status

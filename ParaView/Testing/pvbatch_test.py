@@ -58,11 +58,30 @@ def within(stats, tolerance):
 _views = {}
 
 
+def require_remote_rendering(view):
+    """Ends every rank now when a view of several ranks cannot composite them.
+
+    When one rank cannot open its display (Xvfb, now and then, under parallel load),
+    ParaView finds remote rendering unavailable on every rank, and its first render of a
+    volume waits forever in a collective that the other ranks never enter: the test would
+    hang until CTest's timeout. Reproduced by running one rank of four with DISPLAY=:9999.
+    Ending at once instead lets the test's retry start a fresh run.
+    """
+    if scenes.number_of_ranks() < 2 or view.GetClientSideObject().GetRemoteRenderingAvailable():
+        return
+    print("ABORTED: the render view has no remote rendering on %d ranks (a rank could not "
+          "open its display); ParaView would wait forever in its first render"
+          % scenes.number_of_ranks())
+    sys.stdout.flush()
+    os._exit(2)
+
+
 def render(mhd, scene, representation, path, ghost_layers=-1, illumination=True, exchange=True):
     # One view per scene and process: a second render view would start from a camera
     # that ParaView resets to the data.
     if id(scene) not in _views:
         _views[id(scene)] = scenes.make_view(SIZE, scene)
+        require_remote_rendering(_views[id(scene)])
     view = _views[id(scene)]
     reader = scenes.open_volume(mhd)
     display = scenes.show_volume(reader, view, representation, scene)
