@@ -10,6 +10,7 @@
 #include "vtkColorTransferFunction.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
+#include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
 #include "vtkMultiVolume.h"
 #include "vtkPiecewiseFunction.h"
@@ -303,14 +304,23 @@ std::string FramePlanner::PlanGeometry(
          "TemplateRadius; this volume renders as vtkOpenGLGPUVolumeRayCastMapper would.");
     return "degenerate spacing";
   }
+  // World -> dataset (the volume's matrix), dataset -> index axes (the image's direction
+  // matrix: without it a rotated or mirrored image tested its photons along the wrong
+  // texture axes), then texels -> [0, 1].
   vtkNew<vtkMatrix4x4> inverse;
   vtkMatrix4x4::Invert(volumeMatrix, inverse);
+  vtkNew<vtkMatrix3x3> toIndexAxes;
+  vtkMatrix3x3::Invert(image->GetDirectionMatrix(), toIndexAxes);
   for (int axis = 0; axis < 3; ++axis)
   {
     for (int row = 0; row < 3; ++row)
     {
-      // data offset of one template radius along world `axis`, then texels -> [0,1]
-      const double data = inverse->GetElement(row, axis) * plan.Radius;
+      // index-axis offset of one template radius along world `axis`
+      double data = 0.0;
+      for (int c = 0; c < 3; ++c)
+      {
+        data += toIndexAxes->GetElement(row, c) * inverse->GetElement(c, axis) * plan.Radius;
+      }
       const int texels = std::max(1, plan.CellFlag ? dims[row] - 1 : dims[row]);
       const double tex = data / (spacing[row] * texels);
       plan.ToTex[axis][row] = std::isfinite(tex) ? static_cast<float>(tex) : 0.0f;

@@ -4,6 +4,7 @@
 #include "ScattererDecoratedVolumes.h"
 #include "ScattererFramePlan.h"
 #include "ScattererIlluminationParameters.h"
+#include "ScattererMirroredWinding.h"
 #include "ScattererProgramBudget.h"
 #include "ScattererSceneMaterials.h"
 #include "ScattererShaderCompileCheck.h"
@@ -34,6 +35,7 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <sstream>
 #include <vector>
 
 vtkStandardNewMacro(vtkScattererTemplateVolumeMapper);
@@ -407,7 +409,36 @@ void vtkScattererTemplateVolumeMapper::RenderStock(
   this->Internals->LastFeatures = "stock: " + reason;
   this->Internals->LastTransportMs = 0.0;
   scatterer_shader::RemoveIllumination(vol);
-  this->Superclass::GPURender(ren, vol);
+  this->RenderRayCaster(ren, vol);
+}
+
+void vtkScattererTemplateVolumeMapper::RenderRayCaster(vtkRenderer* ren, vtkVolume* vol)
+{
+  const bool mirrors = scatterer_render::DirectionMirrors(vol, this->GetInput());
+  const float requested = this->ImageSampleDistance;
+  this->ImageSampleDistance = scatterer_render::ImageSampleDistanceFor(mirrors, requested);
+  if (this->ImageSampleDistance != requested)
+  {
+    std::ostringstream what;
+    what << "ImageSampleDistance " << requested
+         << " is not applied to a volume whose direction matrix mirrors (determinant < 0): "
+            "it renders at the full image resolution (docs/hard-cases.md).";
+    this->Internals->Warn(what.str());
+  }
+  if (mirrors && scatterer_render::NearPlaneCutsVolume(ren, vol, this->GetInput()))
+  {
+    this->Internals->Warn(
+      "A volume whose direction matrix mirrors (determinant < 0) is not drawn while the "
+      "camera's near plane cuts through it: VTK 9.1's ray caster then clips its bounding box "
+      "on the wrong side (the stock mapper draws nothing either). Store the voxels in the "
+      "opposite order along one axis, with a direction matrix that does not mirror, to see it "
+      "from inside (docs/hard-cases.md).");
+  }
+  {
+    scatterer_render::ScopedMirroredWinding winding(mirrors);
+    this->Superclass::GPURender(ren, vol);
+  }
+  this->ImageSampleDistance = requested;
 }
 
 void vtkScattererTemplateVolumeMapper::StillSampling(
@@ -574,7 +605,7 @@ std::string vtkScattererTemplateVolumeMapper::RenderIlluminated(vtkRenderer* ren
   // Render, checking that the illumination program compiled.
   in.CompileCheck.Begin(renWin, this);
   in.Uniforms.BindTextures(vol);
-  this->Superclass::GPURender(ren, vol);
+  this->RenderRayCaster(ren, vol);
   in.Uniforms.UnbindTextures();
   const bool compiled = in.CompileCheck.End();
   // The program that drew is the last one bound, unless VTK drew its resampling quad

@@ -524,6 +524,9 @@ private:
     const scatterer_render::FramePlan& plan);
   /** Renders as the stock mapper, recording why. */
   void RenderStock(vtkRenderer* ren, vtkVolume* vol, const std::string& reason);
+  /** The stock ray caster's GPURender, with the box's winding right for an image whose
+   * direction matrix mirrors (ScattererMirroredWinding.h). */
+  void RenderRayCaster(vtkRenderer* ren, vtkVolume* vol);
 };
 
 #endif
