@@ -255,7 +255,7 @@ std::string FramePlanner::Plan(vtkRenderer* ren, vtkVolume* vol, const VolumeSou
   plan.Lights = scatterer_scene::CollectLights(ren, vol->GetProperty());
   if (plan.Lights.Count() == 0)
   {
-    return "no light is switched on";
+    return "no light is switched on with an intensity above 0";
   }
   if (plan.Lights.Skipped > 0)
   {

@@ -18,6 +18,7 @@
 
 #include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
+#include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkMatrix4x4.h"
 #include "vtkMultiVolume.h"
@@ -81,6 +82,8 @@ struct vtkScattererTemplateVolumeMapper::vtkInternals
   double LastTransportMs = 0.0;
   // This frame rebuilt something and reported progress: GPURender reports 1 at its end.
   bool ProgressReported = false;
+  // The components of each input's scalars at the last frame (ReleaseOnNewComponents).
+  std::vector<int> InputComponents;
 };
 
 vtkScattererTemplateVolumeMapper::vtkScattererTemplateVolumeMapper()
@@ -363,6 +366,7 @@ scatterer_render::IlluminationParameters vtkScattererTemplateVolumeMapper::Gathe
  */
 void vtkScattererTemplateVolumeMapper::GPURender(vtkRenderer* ren, vtkVolume* vol)
 {
+  this->ReleaseOnNewComponents(ren);
   vtkInternals& in = *this->Internals;
   const scatterer_render::IlluminationParameters parameters = this->GatherParameters();
   scatterer_render::FramePlan plan;
@@ -390,6 +394,32 @@ void vtkScattererTemplateVolumeMapper::GPURender(vtkRenderer* ren, vtkVolume* vo
     this->ReportProgress(1.0);
     in.ProgressReported = false;
   }
+}
+
+/*
+ * VTK 9.1's ray caster makes its transfer-function tables, one per component, when its
+ * volume property changes (vtkVolumeInputHelper::InitializeTransferFunction), not when
+ * the scalars' components do: scalars that gained components under the same property
+ * (a 1-component volume replaced by a 2-component one with SetInputData) crashed the
+ * next frame in vtkVolumeInputHelper::UpdateTransferFunctions, which read a table never
+ * made, the stock mapper as well. Released, the next frame starts as a first frame does.
+ */
+void vtkScattererTemplateVolumeMapper::ReleaseOnNewComponents(vtkRenderer* ren)
+{
+  std::vector<int> components;
+  for (const int port : this->Ports)
+  {
+    int cellFlag = 0;
+    vtkDataArray* scalars = vtkAbstractMapper::GetScalars(this->GetInput(port), this->ScalarMode,
+      this->ArrayAccessMode, this->ArrayId, this->ArrayName, cellFlag);
+    components.push_back(scalars ? scalars->GetNumberOfComponents() : 0);
+  }
+  std::vector<int>& last = this->Internals->InputComponents;
+  if (!last.empty() && components != last && ren && ren->GetRenderWindow())
+  {
+    this->ReleaseGraphicsResources(ren->GetRenderWindow());
+  }
+  last = components;
 }
 
 void vtkScattererTemplateVolumeMapper::ReportProgress(double fraction)

@@ -497,6 +497,9 @@ protected:
 private:
   /** UpdateProgress, and remember to report 1 at the end of the frame. */
   void ReportProgress(double fraction);
+  /** Releases the graphics resources when an input's scalars have other components than
+   * at the last frame (VTK 9.1's ray caster crashed on more of them). */
+  void ReleaseOnNewComponents(vtkRenderer* ren);
 
   vtkScattererTemplateVolumeMapper(const vtkScattererTemplateVolumeMapper&) = delete;
   void operator=(const vtkScattererTemplateVolumeMapper&) = delete;

@@ -136,10 +136,9 @@ void SetUpScene(vtkRenderer* renderer)
 
 using Pictures = scatterer_testing::LitPictures;
 
-Pictures Render(Kind kind, bool withBall = true)
+// The transfer functions of @p kind on @p property.
+void SetUpProperty(vtkVolumeProperty* property, Kind kind)
 {
-  const auto image = Volume(kind, withBall);
-  vtkNew<vtkVolumeProperty> property;
   property->SetScalarOpacityUnitDistance(1.0);
   if (kind == Kind::Independent)
   {
@@ -164,6 +163,13 @@ Pictures Render(Kind kind, bool withBall = true)
     ramp->AddRGBPoint(255, 1.0, 0.9, 0.6);
     property->SetColor(ramp);
   }
+}
+
+Pictures Render(Kind kind, bool withBall = true)
+{
+  const auto image = Volume(kind, withBall);
+  vtkNew<vtkVolumeProperty> property;
+  SetUpProperty(property, kind);
   vtkNew<vtkScattererTemplateVolumeMapper> ours;
   vtkNew<vtkOpenGLGPUVolumeRayCastMapper> stock;
   vtkNew<vtkRenderer> renderer;
@@ -319,4 +325,41 @@ TEST(LitInputKinds, PartitionedVolumeIsLitAsTheWholeWithoutSeams)
   // up half a texel off in the blocks measured 0.60 / 2.09 % here, against 0.50 / 1.86 %).
   EXPECT_LE(e.Lit.Mean, e.Stock.Mean + 0.05);
   EXPECT_LE(e.Lit.FractionOver, e.Stock.FractionOver);
+}
+
+// VTK 9.1's ray caster makes a table per component when the volume property changes, not
+// when the scalars' components do: a one-scalar volume replaced by a two-component one
+// under the same property crashed the next frame (the stock mapper too). The mapper
+// starts afresh instead, and draws what a fresh mapper draws.
+TEST(LitInputKinds, ScalarsThatGainComponentsUnderTheSamePropertyRender)
+{
+  vtkNew<vtkVolumeProperty> property;
+  SetUpProperty(property, Kind::Independent);
+  const auto before = Volume(Kind::Transfer2D); // one scalar: the ball and plate
+  const auto after = Volume(Kind::Independent);
+  vtkRenderWindow* window = scatterer_testing::SharedWindow();
+
+  vtkNew<vtkScattererTemplateVolumeMapper> reused;
+  vtkNew<vtkRenderer> renderer;
+  scatterer_examples::AddVolume(renderer, reused, property);
+  SetUpMapper(reused, before);
+  SetUpScene(renderer);
+  window->AddRenderer(renderer);
+  const auto first = scatterer_testing::RenderAndGrab(window);
+  ASSERT_GT(scatterer_testing::MeanBrightness(first), 5.0) << "the object is visible";
+  reused->SetInputData(after);
+  const auto second = scatterer_testing::RenderAndGrab(window);
+  window->RemoveRenderer(renderer);
+  reused->ReleaseGraphicsResources(window);
+  EXPECT_EQ(reused->GetLastShaderFeatures().rfind("transport", 0), 0u)
+    << reused->GetLastShaderFeatures();
+
+  vtkNew<vtkScattererTemplateVolumeMapper> fresh;
+  vtkNew<vtkRenderer> freshRenderer;
+  scatterer_examples::AddVolume(freshRenderer, fresh, property);
+  SetUpMapper(fresh, after);
+  SetUpScene(freshRenderer);
+  EXPECT_LE(scatterer_testing::MaxDifference(
+              second, scatterer_testing::RenderSceneOnce(freshRenderer, fresh)),
+    1);
 }
