@@ -253,6 +253,13 @@ std::string FramePlanner::Plan(vtkRenderer* ren, vtkVolume* vol, const VolumeSou
     return components;
   }
   plan.Lights = scatterer_scene::CollectLights(ren, vol->GetProperty());
+  if (plan.Lights.NonFinite > 0)
+  {
+    warn("Scatterer-template illumination ignores " + std::to_string(plan.Lights.NonFinite) +
+      " switched-on light(s) with a NaN or infinite intensity, colour, position, focal point, "
+      "attenuation, cone angle or exponent (or volume property diffuse or ambient "
+      "coefficient).");
+  }
   if (plan.Lights.Count() == 0)
   {
     return "no light is switched on with an intensity above 0";

@@ -7,9 +7,41 @@
 #include "vtkVolumeProperty.h"
 
 #include <cmath>
+#include <initializer_list>
 
 namespace scatterer_scene
 {
+namespace
+{
+bool AllFinite(std::initializer_list<double> values)
+{
+  for (const double v : values)
+  {
+    if (!std::isfinite(v))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+// Every setting of @p light that reaches the illumination, and the property's
+// coefficients @p kd and @p ka, are finite (position and focal point as placed for this
+// frame).
+bool IsFinite(vtkLight* light, double kd, double ka)
+{
+  double position[3], focal[3];
+  light->GetTransformedPosition(position);
+  light->GetTransformedFocalPoint(focal);
+  const double* d = light->GetDiffuseColor();
+  const double* a = light->GetAmbientColor();
+  const double* att = light->GetAttenuationValues();
+  return AllFinite({ light->GetIntensity(), kd, ka, position[0], position[1], position[2], focal[0],
+    focal[1], focal[2], d[0], d[1], d[2], a[0], a[1], a[2], att[0], att[1], att[2],
+    light->GetConeAngle(), light->GetExponent() });
+}
+}
+
 LightSet CollectLights(vtkRenderer* renderer, vtkVolumeProperty* property)
 {
   LightSet set;
@@ -22,6 +54,11 @@ LightSet CollectLights(vtkRenderer* renderer, vtkVolumeProperty* property)
   {
     if (!light->GetSwitch() || light->GetIntensity() <= 0.0)
     {
+      continue;
+    }
+    if (!IsFinite(light, kd, ka))
+    {
+      ++set.NonFinite;
       continue;
     }
     if (set.Count() >= kMaxLights)

@@ -26,13 +26,19 @@ struct LightSet
   std::vector<float> AmbientColor;   ///< 3 per light: ka * ambient colour * intensity
   float Ambient[3] = { 0, 0, 0 };    ///< the sum of AmbientColor over the lights
   bool AnyPositional = false;
-  int Skipped = 0; ///< switched-on lights beyond the limit
+  int Skipped = 0;   ///< switched-on lights beyond the limit
+  int NonFinite = 0; ///< switched-on lights left out for a NaN or infinite setting
   int Count() const { return static_cast<int>(this->Positional.size()); }
 };
 
 constexpr int kMaxLights = 6;
 
-/** Collects the switched-on lights of @p renderer (call during rendering). */
+/**
+ * Collects the switched-on lights of @p renderer (call during rendering). A light whose
+ * intensity, colours, position, focal point, attenuation, cone angle or exponent (or the
+ * property's diffuse or ambient coefficient) is NaN or infinite would light every sample
+ * NaN, a black frame: it is left out and counted (NonFinite).
+ */
 LightSet CollectLights(vtkRenderer* renderer, vtkVolumeProperty* property);
 }
 

@@ -5,6 +5,7 @@
 
 #include "vtkCamera.h"
 #include "vtkImageData.h"
+#include "vtkLight.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLGPUVolumeRayCastMapper.h"
@@ -211,4 +212,31 @@ TEST(BadInput, LabelTransferFunctionsGiveOneMaterialPerLabel)
   stage.Mapper->AddMaterialsFromLabelTransferFunctions(none);
   EXPECT_TRUE(capture.Has("no label transfer functions")) << capture.Window->Text;
   EXPECT_EQ(stage.Mapper->GetNumberOfRequestedMaterials(), 3);
+}
+
+// A light with a NaN or infinite setting would light every sample NaN (a black frame):
+// it is left out, with a warning; the frame is the one the other lights give, or the
+// stock mapper's when none is left.
+TEST(BadInput, NonFiniteLightsAreLeftOutWithAWarning)
+{
+  Capture capture;
+  Stage stage;
+  stage.Mapper->SetInputData(scatterer_testing::MakeShellBallPlate(32, VTK_UNSIGNED_CHAR));
+  const auto good = stage.Render();
+  ASSERT_GT(scatterer_testing::MeanBrightness(good), 5.0);
+  vtkLight* bad = scatterer_testing::AddSceneLight(stage.Renderer, -1, 0.2, 0.5);
+  bad->SetIntensity(std::numeric_limits<double>::quiet_NaN());
+  const auto withNaN = stage.Render();
+  EXPECT_TRUE(capture.Has("ignores 1 switched-on light(s) with a NaN or infinite"))
+    << capture.Window->Text;
+  EXPECT_EQ(scatterer_testing::MaxDifference(good, withNaN), 0);
+
+  // Only lights with infinite positions: nothing to light with, the stock picture.
+  stage.Renderer->RemoveAllLights();
+  vtkLight* far = scatterer_testing::AddSceneLight(stage.Renderer, 1, 0.5, 0.8);
+  far->SetPosition(std::numeric_limits<double>::infinity(), 0, 0);
+  const auto none = stage.Render();
+  EXPECT_EQ(stage.Mapper->GetLastShaderFeatures().rfind("stock: no light", 0), 0u)
+    << stage.Mapper->GetLastShaderFeatures();
+  EXPECT_GT(scatterer_testing::MeanBrightness(none), 5.0) << "a black frame";
 }
