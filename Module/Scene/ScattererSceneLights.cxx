@@ -25,20 +25,15 @@ bool AllFinite(std::initializer_list<double> values)
   return true;
 }
 
-// Every setting of @p light that reaches the illumination, and the property's
-// coefficients @p kd and @p ka, are finite (position and focal point as placed for this
-// frame).
-bool IsFinite(vtkLight* light, double kd, double ka)
+// Every setting of @p light that reaches the illumination besides its placement, and the
+// property's coefficients @p kd and @p ka, are finite.
+bool SettingsFinite(vtkLight* light, double kd, double ka)
 {
-  double position[3], focal[3];
-  light->GetTransformedPosition(position);
-  light->GetTransformedFocalPoint(focal);
   const double* d = light->GetDiffuseColor();
   const double* a = light->GetAmbientColor();
   const double* att = light->GetAttenuationValues();
-  return AllFinite({ light->GetIntensity(), kd, ka, position[0], position[1], position[2], focal[0],
-    focal[1], focal[2], d[0], d[1], d[2], a[0], a[1], a[2], att[0], att[1], att[2],
-    light->GetConeAngle(), light->GetExponent() });
+  return AllFinite({ light->GetIntensity(), kd, ka, d[0], d[1], d[2], a[0], a[1], a[2], att[0],
+    att[1], att[2], light->GetConeAngle(), light->GetExponent() });
 }
 }
 
@@ -56,7 +51,14 @@ LightSet CollectLights(vtkRenderer* renderer, vtkVolumeProperty* property)
     {
       continue;
     }
-    if (!IsFinite(light, kd, ka))
+    // The renderer has already placed headlights and camera lights for this
+    // frame (vtkRenderer::UpdateLightsGeometryToFollowCamera), so the
+    // transformed position and focal point are in world coordinates.
+    double position[3], focal[3];
+    light->GetTransformedPosition(position);
+    light->GetTransformedFocalPoint(focal);
+    if (!SettingsFinite(light, kd, ka) ||
+      !AllFinite({ position[0], position[1], position[2], focal[0], focal[1], focal[2] }))
     {
       ++set.NonFinite;
       continue;
@@ -66,12 +68,6 @@ LightSet CollectLights(vtkRenderer* renderer, vtkVolumeProperty* property)
       ++set.Skipped;
       continue;
     }
-    // The renderer has already placed headlights and camera lights for this
-    // frame (vtkRenderer::UpdateLightsGeometryToFollowCamera), so the
-    // transformed position and focal point are in world coordinates.
-    double position[3], focal[3];
-    light->GetTransformedPosition(position);
-    light->GetTransformedFocalPoint(focal);
     double toLight[3] = { position[0] - focal[0], position[1] - focal[1], position[2] - focal[2] };
     if (vtkMath::Normalize(toLight) == 0.0)
     {
