@@ -5,7 +5,8 @@
 #   bash Benchmarks/accuracy/run_accuracy_benchmark.sh [BUILD_DIR] [OUT_DIR] [SPP] [FRAMES]
 #
 # Renders the CT head scene (under its one light and under vtkLightKit) and the synthetic
-# shell + plate scenes (a directional and a point light) at 256x256 with stock
+# shell + plate scenes (a directional and a point light) and dense-ball (dense, nearly
+# white labels) at 256x256 with stock
 # composite, stock Phong and template illumination over a quality ladder; compares each
 # with the Monte Carlo reference; writes OUT/accuracy.csv, OUT/accuracy-<scene>.png (plot),
 # OUT/accuracy-strip-<scene>.png and a PNG per configuration.

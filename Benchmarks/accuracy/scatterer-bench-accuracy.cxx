@@ -1,8 +1,8 @@
 // The accuracy / time trade-off benchmark (docs/accuracy.md; not part of the tests).
 //
 // For each scene (the CT head at a reduced size, the same under vtkLightKit's five lights
-// (ParaView's default lighting), the synthetic shell + plate scene, and the same lit by a
-// point light):
+// (ParaView's default lighting), the synthetic shell + plate scene, the same lit by a
+// point light, and dense, nearly white labels, dense-ball):
 // renders the converged Monte Carlo reference (Reference; cached in OUT as
 // reference-<scene>-<spp>spp.vti), then every GPU configuration (stock composite, stock
 // Phong, template illumination over a quality ladder, a brute-force template setting)
@@ -375,8 +375,8 @@ int main(int argc, char* argv[])
 {
   int frames = 3, width = 256, height = 256, spp = 1024;
   std::string out = "accuracy-benchmark",
-              scenes = "ct-head,ct-head-light-kit,shell-plate,shell-plate-point", only, peerPython,
-              peerScript;
+              scenes = "ct-head,ct-head-light-kit,shell-plate,shell-plate-point,dense-ball", only,
+              peerPython, peerScript;
   for (int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
@@ -399,7 +399,8 @@ int main(int argc, char* argv[])
     else
     {
       std::cerr << "usage: scatterer-bench-accuracy [--size WxH] [--frames N] [--spp N] "
-                   "[--scenes ct-head,ct-head-light-kit,shell-plate,shell-plate-point] [--configs "
+                   "[--scenes ct-head,ct-head-light-kit,shell-plate,shell-plate-point,dense-ball] "
+                   "[--configs "
                    "a,b] [--out DIR]\n"
                    "         [--peer-python 'PYTHONPATH=... /usr/bin/python3' --peer-script "
                    "vtk92_scattering_peer.py]\n";

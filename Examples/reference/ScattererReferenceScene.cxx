@@ -63,6 +63,25 @@ void ApplyLightKit(vtkRenderer* renderer)
   kit->AddLightsToRenderer(renderer);
 }
 
+namespace
+{
+// The synthetic scenes' volume property: linear interpolation, VTK's default shading
+// coefficients, shading off.
+void ApplySyntheticProperty(vtkVolumeProperty* property, vtkPiecewiseFunction* opacity,
+  vtkColorTransferFunction* color, double opacityUnitDistance)
+{
+  property->SetScalarOpacity(opacity);
+  property->SetColor(color);
+  property->SetInterpolationTypeToLinear();
+  property->SetScalarOpacityUnitDistance(opacityUnitDistance);
+  property->SetAmbient(0.1);
+  property->SetDiffuse(0.9);
+  property->SetSpecular(0.2);
+  property->SetSpecularPower(10.0);
+  property->ShadeOff();
+}
+}
+
 void MakeHardScene(VtkScene& scene, int n)
 {
   n = std::max(n, 8);
@@ -108,15 +127,7 @@ void MakeHardScene(VtkScene& scene, int n)
   color->AddRGBPoint(100, 0.9, 0.3, 0.2);
   color->AddRGBPoint(150, 0.9, 0.9, 0.9);
   color->AddRGBPoint(255, 0.9, 0.9, 0.9);
-  scene.Property->SetScalarOpacity(opacity);
-  scene.Property->SetColor(color);
-  scene.Property->SetInterpolationTypeToLinear();
-  scene.Property->SetScalarOpacityUnitDistance(1.0);
-  scene.Property->SetAmbient(0.1);
-  scene.Property->SetDiffuse(0.9);
-  scene.Property->SetSpecular(0.2);
-  scene.Property->SetSpecularPower(10.0);
-  scene.Property->ShadeOff();
+  ApplySyntheticProperty(scene.Property, opacity, color, 1.0);
   scene.Renderer = vtkSmartPointer<vtkRenderer>::New();
   vtkCamera* cam = scene.Renderer->GetActiveCamera();
   cam->SetPosition(-40.0, -200.0, 110.0);
@@ -155,6 +166,64 @@ void MakeHardPointLightScene(VtkScene& scene, int n)
   light->SetIntensity(1.0);
   light->SetDiffuseColor(1.0, 1.0, 1.0);
   scene.Renderer->AddLight(light);
+}
+
+void MakeDenseScene(VtkScene& scene)
+{
+  // Two labels of a segmentation, as users colour them: opaque at the voxel scale and
+  // nearly white, so that multiple scattering carries most of their light and a channel
+  // of colour exactly 1 scatters without absorbing.
+  const int n = 64;
+  scene.Name = "dense-ball";
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(n, n, n);
+  image->SetSpacing(1.0, 1.0, 1.0);
+  image->SetOrigin(0.0, 0.0, 0.0);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+  auto* s = static_cast<unsigned char*>(image->GetScalarPointer());
+  const double c[3] = { 28.0, 32.0, 30.0 };
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+      {
+        const double r =
+          std::sqrt((i - c[0]) * (i - c[0]) + (j - c[1]) * (j - c[1]) + (k - c[2]) * (k - c[2]));
+        unsigned char v = 0;
+        if (r <= 18.0)
+          v = 200; // the ball: ivory
+        if (i >= 52 && i <= 57 && j >= 6 && j <= 58 && k >= 4 && k <= 56)
+          v = 120; // a plate beside it: warm white, its red channel exactly 1
+        s[(static_cast<size_t>(k) * n + j) * n + i] = v;
+      }
+  scene.Image = image;
+  scene.Property = vtkSmartPointer<vtkVolumeProperty>::New();
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(0, 0.0);
+  opacity->AddPoint(60, 0.0);
+  opacity->AddPoint(100, 0.5);
+  opacity->AddPoint(255, 0.9);
+  vtkNew<vtkColorTransferFunction> color;
+  color->AddRGBPoint(0, 1.0, 0.8, 0.6);
+  color->AddRGBPoint(255, 1.0, 1.0, 1.0);
+  ApplySyntheticProperty(scene.Property, opacity, color, 0.25);
+  scene.Renderer = vtkSmartPointer<vtkRenderer>::New();
+  vtkCamera* cam = scene.Renderer->GetActiveCamera();
+  cam->SetPosition(20.0, -110.0, 120.0);
+  cam->SetFocalPoint(34.0, 32.0, 30.0);
+  cam->SetViewUp(0.0, 0.0, 1.0);
+  cam->SetViewAngle(30.0);
+  cam->SetClippingRange(50.0, 600.0);
+  scene.Renderer->AutomaticLightCreationOff();
+  scene.Renderer->RemoveAllLights();
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->PositionalOff();
+  light->SetPosition(-60.0, -50.0, 110.0); // from the ball's side, above and in front
+  light->SetFocalPoint(34.0, 32.0, 30.0);
+  light->SetIntensity(1.0);
+  light->SetDiffuseColor(1.0, 1.0, 1.0);
+  scene.Renderer->AddLight(light);
+  scene.SampleDistance = 0.5;
 }
 
 void ApplySceneView(const VtkScene& scene, vtkRenderer* renderer)
@@ -356,7 +425,8 @@ bool WriteFloatImage(vtkImageData* image, const std::string& path)
   return w->Write() == 1;
 }
 
-const char* const kNamedScenes = "ct-head, ct-head-light-kit, shell-plate or shell-plate-point";
+const char* const kNamedScenes =
+  "ct-head, ct-head-light-kit, shell-plate, shell-plate-point or dense-ball";
 
 bool IsCtHeadScene(const std::string& name)
 {
@@ -365,7 +435,8 @@ bool IsCtHeadScene(const std::string& name)
 
 bool IsNamedScene(const std::string& name)
 {
-  return IsCtHeadScene(name) || name == "shell-plate" || name == "shell-plate-point";
+  return IsCtHeadScene(name) || name == "shell-plate" || name == "shell-plate-point" ||
+    name == "dense-ball";
 }
 
 bool MakeNamedScene(const std::string& name, VtkScene& scene, std::string& error, int& exitCode)
@@ -389,6 +460,11 @@ bool MakeNamedScene(const std::string& name, VtkScene& scene, std::string& error
   if (name == "shell-plate-point")
   {
     MakeHardPointLightScene(scene);
+    return true;
+  }
+  if (name == "dense-ball")
+  {
+    MakeDenseScene(scene);
     return true;
   }
   error = "unknown scene '" + name + "' (" + kNamedScenes + ")";

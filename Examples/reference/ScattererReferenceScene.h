@@ -64,8 +64,13 @@ void MakeHardScene(VtkScene& scene, int n = 96);
  * box behind the plate: its name is "shell-plate-point" ("shell-plate-point-<n>"). */
 void MakeHardPointLightScene(VtkScene& scene, int n = 96);
 
+/** Dense, nearly white matter (a segmentation's labels as users colour them): a ball and
+ * a plate beside it, 64^3, opaque at the voxel scale, the plate's red channel of albedo
+ * exactly 1, under one directional light. Its name is "dense-ball". */
+void MakeDenseScene(VtkScene& scene);
+
 /** The named scenes MakeNamedScene knows, in words: "ct-head, ct-head-light-kit,
- * shell-plate or shell-plate-point". */
+ * shell-plate, shell-plate-point or dense-ball". */
 extern const char* const kNamedScenes;
 
 /** True when @p name is one of kNamedScenes. */

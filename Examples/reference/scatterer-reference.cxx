@@ -64,16 +64,17 @@ int ParseArgs(
   scatterer_examples::SetUpCommandLine(app);
   app.footer("Numbers are plain decimal integers (as in scatterer-render); every option takes\n"
              "--opt VALUE or --opt=VALUE, at most once (again only with the same value).\n"
-             "Refused as contradictory: --scene shell-plate or shell-plate-point with --input (a\n"
-             "built-in volume), --scene auto without --input.\n"
+             "Refused as contradictory: --scene shell-plate, shell-plate-point or dense-ball with\n"
+             "--input (a built-in volume), --scene auto without --input.\n"
              "Exit status: 0 the images were written; 1 the volume or the prepared CT head cannot\n"
              "be read, or an image cannot be written; 2 a bad command line (usage error).\n");
   CLI::Option* scene = scatterer_examples::AddValueOption(app, "--scene", "SCENE",
     "ct-head (default: the prepared CT head, " + scatterer_examples::CtHeadPath() +
       ",\nmade by scripts/prepare-data.sh in the source tree, or --input in that scene),\n"
       "ct-head-light-kit (the same lit by vtkLightKit, ParaView's default lighting),\n"
-      "shell-plate (synthetic), shell-plate-point (lit by a point light), or auto (--input\n"
-      "with automatic transfer functions)",
+      "shell-plate (synthetic), shell-plate-point (lit by a point light), dense-ball\n"
+      "(synthetic: dense, nearly white labels), or auto (--input with automatic transfer\n"
+      "functions)",
     [&o](const std::string& v)
     {
       if (!scatterer_reference_vtk::IsNamedScene(v) && v != "auto")

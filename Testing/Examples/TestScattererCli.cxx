@@ -644,6 +644,23 @@ TEST_F(Cli, ReferenceTakesAnInputInTheCtHeadScenesOnly)
   EXPECT_EQ(lightKit.Status, 0) << lightKit.Output;
   EXPECT_TRUE(fs::exists(prefix + ".vti")) << lightKit.Output;
 }
+
+// The accuracy benchmark's dense scene is built in: it renders without data, and refuses
+// --input as the other synthetic scenes do.
+TEST_F(Cli, ReferenceRendersTheBuiltInDenseScene)
+{
+  const std::string prefix = (this->Dir / "dense-ball").string();
+  const Result dense = RunProgram(SCATTERER_REFERENCE_EXE,
+    { "--scene", "dense-ball", "--size", "16x16", "--spp", "4", "--quiet", "--output", prefix });
+  EXPECT_EQ(dense.Status, 0) << dense.Output;
+  EXPECT_TRUE(Contains(dense.Output, "\"scene\": \"dense-ball\"")) << dense.Output;
+  EXPECT_TRUE(fs::exists(prefix + ".vti")) << dense.Output;
+  EXPECT_FALSE(Contains(dense.Output, "\"mean_luminance\": 0,")) << dense.Output;
+  const Result withInput = RunProgram(SCATTERER_REFERENCE_EXE,
+    { "--scene", "dense-ball", "--input", this->WriteMetaImage("ball", Ball()) });
+  ExpectUsageError(
+    withInput, SCATTERER_REFERENCE_EXE, { "--scene dense-ball", "--input", "built-in" });
+}
 #endif
 
 // --opt=value means what --opt value means, in both programs.
