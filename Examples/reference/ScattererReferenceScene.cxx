@@ -65,8 +65,8 @@ void ApplyLightKit(vtkRenderer* renderer)
 
 namespace
 {
-// The synthetic scenes' volume property: linear interpolation, VTK's default shading
-// coefficients, shading off.
+// The synthetic scenes' volume property: linear interpolation, ambient 0.1, diffuse 0.9,
+// specular 0.2 of power 10 (for the configurations that shade), shading off.
 void ApplySyntheticProperty(vtkVolumeProperty* property, vtkPiecewiseFunction* opacity,
   vtkColorTransferFunction* color, double opacityUnitDistance)
 {
