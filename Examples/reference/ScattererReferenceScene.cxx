@@ -80,6 +80,44 @@ void ApplySyntheticProperty(vtkVolumeProperty* property, vtkPiecewiseFunction* o
   property->SetSpecularPower(10.0);
   property->ShadeOff();
 }
+
+// The synthetic scenes' renderer: a camera at @p position looking at @p focal (view up
+// +z, view angle 30 degrees, clipping range 50 to @p farClip) and no lights.
+vtkSmartPointer<vtkRenderer> SyntheticRenderer(
+  const double position[3], const double focal[3], double farClip)
+{
+  auto renderer = vtkSmartPointer<vtkRenderer>::New();
+  vtkCamera* cam = renderer->GetActiveCamera();
+  cam->SetPosition(position[0], position[1], position[2]);
+  cam->SetFocalPoint(focal[0], focal[1], focal[2]);
+  cam->SetViewUp(0.0, 0.0, 1.0);
+  cam->SetViewAngle(30.0);
+  cam->SetClippingRange(50.0, farClip);
+  renderer->AutomaticLightCreationOff();
+  renderer->RemoveAllLights();
+  return renderer;
+}
+
+// One white scene light of intensity 1 at @p position toward @p focal: directional, or
+// with @p positional a point light (no cone, no attenuation).
+void AddWhiteSceneLight(
+  vtkRenderer* renderer, const double position[3], const double focal[3], bool positional)
+{
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->SetPositional(positional);
+  if (positional)
+  {
+    light->SetConeAngle(180.0);
+  }
+  light->SetPosition(position[0], position[1], position[2]);
+  light->SetFocalPoint(focal[0], focal[1], focal[2]);
+  light->SetIntensity(1.0);
+  light->SetDiffuseColor(1.0, 1.0, 1.0);
+  renderer->AddLight(light);
+}
+
+const double kHardSceneCentre[3] = { 48.0, 48.0, 48.0 };
 }
 
 void MakeHardScene(VtkScene& scene, int n)
@@ -128,23 +166,10 @@ void MakeHardScene(VtkScene& scene, int n)
   color->AddRGBPoint(150, 0.9, 0.9, 0.9);
   color->AddRGBPoint(255, 0.9, 0.9, 0.9);
   ApplySyntheticProperty(scene.Property, opacity, color, 1.0);
-  scene.Renderer = vtkSmartPointer<vtkRenderer>::New();
-  vtkCamera* cam = scene.Renderer->GetActiveCamera();
-  cam->SetPosition(-40.0, -200.0, 110.0);
-  cam->SetFocalPoint(48.0, 48.0, 48.0);
-  cam->SetViewUp(0.0, 0.0, 1.0);
-  cam->SetViewAngle(30.0);
-  cam->SetClippingRange(50.0, 800.0);
-  scene.Renderer->AutomaticLightCreationOff();
-  scene.Renderer->RemoveAllLights();
-  vtkNew<vtkLight> light;
-  light->SetLightTypeToSceneLight();
-  light->PositionalOff();
-  light->SetPosition(-100.0, 40.0, 120.0); // from -x (behind the plate) and above
-  light->SetFocalPoint(48.0, 48.0, 48.0);
-  light->SetIntensity(1.0);
-  light->SetDiffuseColor(1.0, 1.0, 1.0);
-  scene.Renderer->AddLight(light);
+  const double camera[3] = { -40.0, -200.0, 110.0 };
+  scene.Renderer = SyntheticRenderer(camera, kHardSceneCentre, 800.0);
+  const double light[3] = { -100.0, 40.0, 120.0 }; // from -x (behind the plate) and above
+  AddWhiteSceneLight(scene.Renderer, light, kHardSceneCentre, false);
   scene.SampleDistance = 0.5;
 }
 
@@ -154,18 +179,11 @@ void MakeHardPointLightScene(VtkScene& scene, int n)
   scene.Name =
     std::max(n, 8) == 96 ? "shell-plate-point" : "shell-plate-point-" + std::to_string(n);
   scene.Renderer->RemoveAllLights();
-  vtkNew<vtkLight> light;
-  light->SetLightTypeToSceneLight();
-  light->PositionalOn();
-  light->SetConeAngle(180.0); // a point light: no cone
   // Outside the box, 35 units behind the plate and below its lower edge: the edge's
   // shadow crosses the top of the shell (z about 62 at its centre), its lines spread 2.2
   // times from the plate to there.
-  light->SetPosition(-20.0, 48.0, 40.0);
-  light->SetFocalPoint(48.0, 48.0, 48.0);
-  light->SetIntensity(1.0);
-  light->SetDiffuseColor(1.0, 1.0, 1.0);
-  scene.Renderer->AddLight(light);
+  const double light[3] = { -20.0, 48.0, 40.0 };
+  AddWhiteSceneLight(scene.Renderer, light, kHardSceneCentre, true);
 }
 
 void MakeDenseScene(VtkScene& scene)
@@ -206,23 +224,10 @@ void MakeDenseScene(VtkScene& scene)
   color->AddRGBPoint(0, 1.0, 0.8, 0.6);
   color->AddRGBPoint(255, 1.0, 1.0, 1.0);
   ApplySyntheticProperty(scene.Property, opacity, color, 0.25);
-  scene.Renderer = vtkSmartPointer<vtkRenderer>::New();
-  vtkCamera* cam = scene.Renderer->GetActiveCamera();
-  cam->SetPosition(20.0, -110.0, 120.0);
-  cam->SetFocalPoint(34.0, 32.0, 30.0);
-  cam->SetViewUp(0.0, 0.0, 1.0);
-  cam->SetViewAngle(30.0);
-  cam->SetClippingRange(50.0, 600.0);
-  scene.Renderer->AutomaticLightCreationOff();
-  scene.Renderer->RemoveAllLights();
-  vtkNew<vtkLight> light;
-  light->SetLightTypeToSceneLight();
-  light->PositionalOff();
-  light->SetPosition(-60.0, -50.0, 110.0); // from the ball's side, above and in front
-  light->SetFocalPoint(34.0, 32.0, 30.0);
-  light->SetIntensity(1.0);
-  light->SetDiffuseColor(1.0, 1.0, 1.0);
-  scene.Renderer->AddLight(light);
+  const double camera[3] = { 20.0, -110.0, 120.0 }, focal[3] = { 34.0, 32.0, 30.0 };
+  scene.Renderer = SyntheticRenderer(camera, focal, 600.0);
+  const double light[3] = { -60.0, -50.0, 110.0 }; // from the ball's side, above and in front
+  AddWhiteSceneLight(scene.Renderer, light, focal, false);
   scene.SampleDistance = 0.5;
 }
 
