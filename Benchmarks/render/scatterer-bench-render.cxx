@@ -70,6 +70,9 @@ struct Config
   // camera still, one point light (a scene light, no cone) circling the volume 2 degrees
   // a frame: a positional light's sweep rebuilt every frame
   bool PointLight = false;
+  // camera still, the opacity function's last point nudged every frame, as while a user
+  // drags it: the medium's passes (0a-0d) rebuilt every frame
+  bool TransferEdit = false;
 };
 
 std::vector<Config> Configs()
@@ -84,6 +87,7 @@ std::vector<Config> Configs()
     { "transport_orbit_lightkit", "template", "transport", true, false, false, true },
     { "transport_orbit_lightkit_interactive", "template", "transport", true, true, false, true },
     { "transport_point_light_moving", "template", "transport", false, false, false, false, true },
+    { "transport_transfer_edit", "template", "transport", false, false, false, false, false, true },
     { "persample_still", "template", "per-sample" },
     { "stock_multivolume", "stock", "transport", false, false, true },
     { "transport_multivolume_still", "template", "transport", false, false, true },
@@ -350,6 +354,14 @@ int main(int argc, char* argv[])
       if (config.PointLight)
       {
         placePointLight(30.0 + 2.0 * (f + 1));
+      }
+      if (config.TransferEdit)
+      {
+        vtkPiecewiseFunction* opacity = property->GetScalarOpacity();
+        double node[4];
+        opacity->GetNodeValue(opacity->GetSize() - 1, node);
+        node[1] *= f % 2 == 0 ? 0.99 : 1.0 / 0.99;
+        opacity->SetNodeValue(opacity->GetSize() - 1, node);
       }
       const auto start = std::chrono::steady_clock::now();
       window->Render();

@@ -184,18 +184,18 @@ void DrawSlices(const TransportPass& pass, vtkOpenGLQuadHelper* quad, vtkShaderP
 }
 
 // A directional light's lines swept in parallel (scatterer_transport_lines.glsl, into
-// Lines by image store) go kLineSlices slices a draw, and the mean of their slices
-// (scatterer_transport_line_mean.glsl) follows every kMeanSlices of them, so that the
-// lines' texture holds a ring of kMeanSlices + 1 slices (those and the slice before
-// them) instead of the whole sweep. A mean after every draw of lines (a ring of 17)
-// held 0.4 MiB less on the CT head, but its many small draws cost a light kit's
-// sweeps 10-18 % on llvmpipe (every two: 8 %; docs/rendering.md, the lines' ring).
+// Lines by image store) go kLineSlices slices a draw, and the draw of the light their
+// slices' texels hold (scatterer_transport_line_texels.glsl) follows every kTexelSlices of
+// them, so that the lines' texture holds a ring of kTexelSlices + 1 slices (those and the
+// slice before them) instead of the whole sweep. A texels' draw after every draw of lines (a ring
+// of 17) held 0.4 MiB less on the CT head, but its many small draws cost a light kit's sweeps 10-18
+// % on llvmpipe (every two: 8 %; docs/rendering.md, the lines' ring).
 constexpr int kLineSlices = 16;
-constexpr int kMeanSlices = 2 * kLineSlices;
+constexpr int kTexelSlices = 2 * kLineSlices;
 
 int LineSlots(const int sweepDims[3])
 {
-  return std::min(sweepDims[2], kMeanSlices + 1);
+  return std::min(sweepDims[2], kTexelSlices + 1);
 }
 
 // Both lines' ends as if no draw had left a line anywhere yet: step -1 matches no draw.
@@ -227,7 +227,7 @@ void DrawLineChunk(const TransportPass& pass, vtkShaderProgram* program, vtkOpen
   program->SetUniformi("st_lineSlots", LineSlots(sweepDims));
   program->SetUniformi("st_lines", 0); // image unit 0
   program->SetUniformi("st_chunkFirst", first);
-  // The mean's draw before read the ring's slots that these stores overwrite.
+  // The texels' draw before read the ring's slots that these stores overwrite.
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
   glBindImageTexture(0, textures.Lines->GetHandle(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG16F);
   const LineRange drawn =
@@ -239,32 +239,34 @@ void DrawLineChunk(const TransportPass& pass, vtkShaderProgram* program, vtkOpen
   ScopedSampler start(program, "st_lineStart", textures.LineEnds[1 - current]);
   lines->Render();
   glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG16F);
-  // The mean's draw reads what these stored.
+  // The texels' draw reads what these stored.
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 
-// The mean light (scatterer_transport_line_mean.glsl) of the sweep's slices @p lo to
+// The light entering each texel (scatterer_transport_line_texels.glsl) of the sweep's slices @p lo
+// to
 // @p hi (texture slices, inclusive), the grid's indices along plan.Axis: into those
 // layers of the transmittance texture (sweep order), or, @p arriving, added into the
 // arriving light (grid order, one texel more a side: the first and last slices take
 // the border beyond them), the lights after the @p firstLight blended on.
-void DrawLineMeans(const TransportPass& pass, vtkOpenGLQuadHelper* mean, vtkShaderProgram* program,
-  const SweepPlan& plan, const int sweepDims[3], int lo, int hi, bool arriving, bool firstLight)
+void DrawLineTexels(const TransportPass& pass, vtkOpenGLQuadHelper* texels,
+  vtkShaderProgram* program, const SweepPlan& plan, const int sweepDims[3], int lo, int hi,
+  bool arriving, bool firstLight)
 {
   vtkOpenGLState* state = pass.Window->GetState();
   program->SetUniformi("st_lineSlots", LineSlots(sweepDims));
   if (!arriving)
   {
     state->vtkglViewport(0, 0, sweepDims[0], sweepDims[1]);
-    DrawLayersWhere(pass.Framebuffer, mean, program, { pass.Textures.Transmittance }, sweepDims[2],
-      [lo, hi](int z) { return z >= lo && z <= hi; });
+    DrawLayersWhere(pass.Framebuffer, texels, program, { pass.Textures.Transmittance },
+      sweepDims[2], [lo, hi](int z) { return z >= lo && z <= hi; });
     return;
   }
   ArrivingSlab slab;
   slab.Axis = plan.Axis;
   slab.Lo = lo;
   slab.Hi = hi;
-  DrawIntoArriving(pass, mean, program, firstLight, slab);
+  DrawIntoArriving(pass, texels, program, firstLight, slab);
 }
 }
 
@@ -294,10 +296,10 @@ bool SweepTransmittance(const TransportPass& pass, const vtkScattererTransportVo
   // A directional light's lines in parallel where the implementation can; otherwise
   // (and for positional lights, whose lines diverge) slice by slice.
   vtkOpenGLQuadHelper* lines = nullptr;
-  vtkOpenGLQuadHelper* mean = nullptr;
+  vtkOpenGLQuadHelper* texels = nullptr;
   const bool arriving = output != SweepOutput::Transmittance;
   if (!light.Positional && pass.SweepLinesInParallel &&
-    pass.Programs.SweepLines(pass.Window, enteringKind, arriving, lines, mean))
+    pass.Programs.SweepLines(pass.Window, enteringKind, arriving, lines, texels))
   {
     const LineRange range = LinesOf(pass.Grid, plan, light, 0, sweepDims[2]);
     const int ringDims[3] = { sweepDims[0], sweepDims[1], LineSlots(sweepDims) };
@@ -308,13 +310,13 @@ bool SweepTransmittance(const TransportPass& pass, const vtkScattererTransportVo
     }
     ClearLineEnds(pass, range);
     // Step i of the sweep is texture slice firstSlice + i * away (one run, away from the
-    // light); the lines and their mean go kMeanSlices steps at a time.
+    // light); the lines and their texels' draw go kTexelSlices steps at a time.
     const int firstSlice = plan.Runs.front().first;
     const int away = plan.Runs.front().second >= firstSlice ? 1 : -1;
     int current = 0;
-    for (int first = 0; first < sweepDims[2]; first += kMeanSlices)
+    for (int first = 0; first < sweepDims[2]; first += kTexelSlices)
     {
-      const int end = std::min(first + kMeanSlices, sweepDims[2]);
+      const int end = std::min(first + kTexelSlices, sweepDims[2]);
       {
         vtkShaderProgram* program = UseProgram(pass.Window, lines);
         SweepBindings bindings(program, pass, light, plan, sweepDims, enteringTexture, enteringMap);
@@ -326,15 +328,15 @@ bool SweepTransmittance(const TransportPass& pass, const vtkScattererTransportVo
       }
       const int last = end - 1;
       const int a = firstSlice + first * away, b = firstSlice + last * away;
-      vtkShaderProgram* program = UseProgram(pass.Window, mean);
+      vtkShaderProgram* program = UseProgram(pass.Window, texels);
       SweepBindings bindings(program, pass, light, plan, sweepDims, enteringTexture, enteringMap);
       ScopedSampler carried(program, "st_lines", textures.Lines);
       if (arriving)
       {
         program->SetUniform3f("st_lightColor", light.Color);
       }
-      DrawLineMeans(pass, mean, program, plan, sweepDims, std::min(a, b), std::max(a, b), arriving,
-        output == SweepOutput::ArrivingFirst);
+      DrawLineTexels(pass, texels, program, plan, sweepDims, std::min(a, b), std::max(a, b),
+        arriving, output == SweepOutput::ArrivingFirst);
     }
     summed = arriving;
     pass.Progress.StepDone();

@@ -26,7 +26,7 @@
 #include "scatterer_transport_gather.h"
 #include "scatterer_transport_layers_gs.h"
 #include "scatterer_transport_layers_vs.h"
-#include "scatterer_transport_line_mean.h"
+#include "scatterer_transport_line_texels.h"
 #include "scatterer_transport_lines.h"
 #include "scatterer_transport_materials.h"
 #include "scatterer_transport_medium.h"
@@ -174,7 +174,7 @@ vtkOpenGLQuadHelper* TransportPrograms::Sweep(
 }
 
 bool TransportPrograms::SweepLines(vtkOpenGLRenderWindow* window, int entering, bool arriving,
-  vtkOpenGLQuadHelper*& lines, vtkOpenGLQuadHelper*& mean)
+  vtkOpenGLQuadHelper*& lines, vtkOpenGLQuadHelper*& texels)
 {
   if (this->LinesRefused || entering < 0 || entering > 1)
   {
@@ -199,24 +199,24 @@ bool TransportPrograms::SweepLines(vtkOpenGLRenderWindow* window, int entering, 
       vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(),
       WithCommon(scatterer_transport_lines, defines(0)).c_str(), ""));
   }
-  std::unique_ptr<vtkOpenGLQuadHelper>& lineMean = this->LineMeans[2 * entering + arriving];
-  if (!lineMean)
+  std::unique_ptr<vtkOpenGLQuadHelper>& lineTexels = this->LineTexels[2 * entering + arriving];
+  if (!lineTexels)
   {
-    const std::string meanDefines =
-      defines(entering) + "#define ST_LINE_MEAN_ARRIVING " + (arriving ? "1\n" : "0\n");
-    lineMean.reset(new vtkOpenGLQuadHelper(window, scatterer_transport_layers_vs,
-      WithCommon(scatterer_transport_line_mean, meanDefines).c_str(),
+    const std::string texelDefines =
+      defines(entering) + "#define ST_LINE_TEXELS_ARRIVING " + (arriving ? "1\n" : "0\n");
+    lineTexels.reset(new vtkOpenGLQuadHelper(window, scatterer_transport_layers_vs,
+      WithCommon(scatterer_transport_line_texels, texelDefines).c_str(),
       scatterer_transport_layers_gs));
   }
-  if (!this->Lines->Program || !lineMean->Program)
+  if (!this->Lines->Program || !lineTexels->Program)
   {
     this->LinesRefused = true;
     this->Lines.reset();
-    lineMean.reset();
+    lineTexels.reset();
     return false;
   }
   lines = this->Lines.get();
-  mean = lineMean.get();
+  texels = lineTexels.get();
   return true;
 }
 
@@ -243,9 +243,9 @@ void TransportPrograms::ReleaseGraphicsResources(vtkWindow* window)
     release(sweep);
   }
   release(this->Lines);
-  for (auto& mean : this->LineMeans)
+  for (auto& texels : this->LineTexels)
   {
-    release(mean);
+    release(texels);
   }
   this->LinesRefused = false;
 }

@@ -77,7 +77,7 @@ struct TransportPrograms
   /**
    * A directional light's pass 1 in a few draws instead of one per slice: its lines
    * swept in parallel (scatterer_transport_lines.glsl, image load/store) and the
-   * texels' mean light after them (scatterer_transport_line_mean.glsl), with the depth
+   * light entering each texel after them (scatterer_transport_line_texels.glsl), with the depth
    * in front of a piece @p entering (0 none, 1 a directional map), into the
    * transmittance texture or, @p arriving, into the arriving light. Compiled the first
    * time they are asked for; false when the OpenGL implementation has no image
@@ -85,7 +85,7 @@ struct TransportPrograms
    * refuses them: the slice sweep (Sweep) serves then, with the same result.
    */
   bool SweepLines(vtkOpenGLRenderWindow* window, int entering, bool arriving,
-    vtkOpenGLQuadHelper*& lines, vtkOpenGLQuadHelper*& mean);
+    vtkOpenGLQuadHelper*& lines, vtkOpenGLQuadHelper*& texels);
 
   /** Compiles the programs for @p variant in @p window (releasing any others); false
    * with @p why set (and none kept) if the OpenGL implementation refuses one. */
@@ -97,7 +97,7 @@ private:
   std::array<std::unique_ptr<vtkOpenGLQuadHelper>*, 10> All();
   std::unique_ptr<vtkOpenGLQuadHelper> Sweeps[kSweepKinds]; ///< pass 1, per kind, when first used
   std::unique_ptr<vtkOpenGLQuadHelper> Lines;               ///< SweepLines' first draw
-  std::unique_ptr<vtkOpenGLQuadHelper> LineMeans[4];        ///< its second, per entering x arriving
+  std::unique_ptr<vtkOpenGLQuadHelper> LineTexels[4];       ///< its second, per entering x arriving
   bool LinesRefused = false; ///< no image load/store here: the slice sweep serves
 };
 

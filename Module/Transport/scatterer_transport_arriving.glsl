@@ -11,8 +11,8 @@
 //   are summed into st_arriving, whose texture has one texel more than the grid on each
 //   side, where the light has crossed no matter (T_l = 1, as the transmittance's
 //   border): by pass 2a (scatterer_transport_arrive.glsl) from a light's transmittance,
-//   or, for a directional light swept in parallel, by its own mean draw
-//   (scatterer_transport_line_mean.glsl). Then the passes read one texture per photon.
+//   or, for a directional light swept in parallel, by its own texels' draw
+//   (scatterer_transport_line_texels.glsl). Then the passes read one texture per photon.
 // - ST_DIRECT_LIGHT (a build of one directional light, a_l = 1): it is read here from
 //   its transmittance, so that it costs no texture of the arriving light. Interpolating
 //   E_l T_l is interpolating T_l, so A is the same either way.

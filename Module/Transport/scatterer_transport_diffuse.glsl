@@ -12,8 +12,15 @@
 // Discretised on the coarse grid with spacing h_a along axis a and solved by Jacobi
 // iteration (D taken at the texel):
 //   phi(x) = (S(x) + D sum_a (phi(x + e_a) + phi(x - e_a)) / h_a^2)
-//            / (2 D sum_a 1 / h_a^2 + sigma_a)
-// Where there is no medium the light escapes (phi = 0), as it does past the grid.
+//            / (2 D sum_a 1 / h_a^2 + sigma_a + escape(x))
+// Where there is no medium the light escapes (phi = 0), as it does past the grid. Through
+// a face toward such a texel the difference quotient lets out D phi / h_a^2 a unit
+// volume, the current D phi / h_a over the face; but at a free surface the current
+// leaving is phi / 2 (Marshak's vacuum boundary condition: no light comes back in;
+// Ishimaru, ch. 9), and in dense matter (D = 1 / (3 sigma_t) << h_a) D phi / h_a is far
+// less: a channel that absorbs nothing (albedo 1) piled its light up and glowed
+// (docs/hard-cases.md). So each such face adds what it lacks,
+//   escape(x) = sum over faces toward no medium of max(0, 1 / (2 h_a) - D / h_a^2).
 // The coarse medium comes from pass 0b (scatterer_transport_coarsen.glsl), the
 // source from pass 3a (scatterer_transport_source.glsl); the source and the fluence are
 // the coarse grid's atlases (scatterer_transport_atlas.glsl).
@@ -27,6 +34,8 @@ uniform sampler2D st_previous;     // coarse grid's atlas: phi of the last itera
 uniform int st_first;              // 1: no previous iteration (phi = 0)
 uniform vec3 st_h;                 // coarse texel size along each axis, world units
 
+// phi of the last iteration at coarse texel c: 0 outside the grid and where there is no
+// medium (the atlas holds 0 there).
 vec3 st_phi(ivec3 c)
 {
   if (st_first != 0 || any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, ivec3(st_coarseDims))))
@@ -36,15 +45,22 @@ vec3 st_phi(ivec3 c)
   return texelFetch(st_previous, st_atlasTexel(c), 0).rgb;
 }
 
+// Coarse texel c holds no medium (the light escapes there), or lies outside the grid.
+bool st_empty(ivec3 c)
+{
+  return any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, ivec3(st_coarseDims))) ||
+    texelFetch(st_coarseMedium, c, 0).a <= 1.0e-6;
+}
+
 void main()
 {
   ivec3 c = ivec3(ivec2(floor(texCoord * st_coarseDims.xy)), int(st_layer));
-  vec4 medium = texelFetch(st_coarseMedium, c, 0);
-  if (medium.a <= 1.0e-6)
+  if (st_empty(c))
   {
     gl_FragData[0] = vec4(0.0);
     return;
   }
+  vec4 medium = texelFetch(st_coarseMedium, c, 0);
   vec3 S = texelFetch(st_coarseSource, st_atlasTexel(c), 0).rgb;
   float D = 1.0 / (3.0 * medium.a);
   vec3 inv2 = 1.0 / (st_h * st_h);
@@ -52,6 +68,16 @@ void main()
     (st_phi(c + ivec3(0, 1, 0)) + st_phi(c - ivec3(0, 1, 0))) * inv2.y +
     (st_phi(c + ivec3(0, 0, 1)) + st_phi(c - ivec3(0, 0, 1))) * inv2.z;
   vec3 sigmaA = medium.a * (vec3(1.0) - medium.rgb);
-  vec3 phi = (S + D * neighbours) / (2.0 * D * (inv2.x + inv2.y + inv2.z) + sigmaA);
+  float escape = 0.0;
+  for (int a = 0; a < 3; ++a)
+  {
+    for (int side = -1; side <= 1; side += 2)
+    {
+      ivec3 n = c;
+      n[a] += side;
+      escape += st_empty(n) ? max(0.0, 0.5 / st_h[a] - D * inv2[a]) : 0.0;
+    }
+  }
+  vec3 phi = (S + D * neighbours) / (2.0 * D * (inv2.x + inv2.y + inv2.z) + sigmaA + vec3(escape));
   gl_FragData[0] = vec4(phi, 1.0);
 }

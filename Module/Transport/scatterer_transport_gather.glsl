@@ -42,14 +42,26 @@
 //VTK::Transport::Scattered
 //VTK::Transport::StoredGather
 in vec2 texCoord;
-uniform sampler3D st_fineGather;   // pass 0a: -1 (none), m, or m + ST_MIXED (st_storedGather)
+uniform sampler3D st_fineGather;   // pass 0a: -1 (none), m, or m + ST_MIXED, interior (st_storedGather)
 uniform int st_atCentroid[ST_MAX_MATERIALS]; // 1: material m's kernel is read at its centroid
 flat in float st_layer;          // this layer (scatterer_transport_layers_gs.glsl)
+
+// A dense interior texel's weight in the ray's trilinear read of the light: texels hold
+// the light entering them (scatterer_transport_sweep.glsl), a dense interior one hardly
+// any (pass 0a, st_isInterior, scatterer_transport_medium.glsl). Each texel stores its
+// light times its weight, and its weight in alpha; the read divides the two
+// interpolations (st_transportRead), so that a sample between a dense surface's texel
+// and the interior behind it reads the surface's light: the interior's share is at
+// most 1 / 65 midway (weights 1 and 1/64), where unweighted it was a half, and the
+// texel layers showed on dense surfaces as terraces. Among interior texels alone the
+// read is their plain trilinear mean.
+const float st_interiorWeight = 1.0 / 64.0;
 
 void main()
 {
   vec3 j = vec3(floor(texCoord * st_gridDims.xy), st_layer);
-  float gather = st_gatherFrom(texelFetch(st_fineGather, ivec3(j), 0).r);
+  float stored = texelFetch(st_fineGather, ivec3(j), 0).r;
+  float gather = st_gatherFrom(stored);
   vec3 single = st_arrivingAt(j);
 #if ST_GATHER != ST_GATHER_ARRIVING
   if (gather >= 0.0)
@@ -89,5 +101,8 @@ void main()
     single = weights > 0.0 ? sum / weights : single;
   }
 #endif
-  gl_FragData[0] = vec4(single + st_scatteredAndAmbient(j), 1.0);
+  // Premultiplied by the texel's weight in the read (st_transportRead,
+  // scatterer_illumination_dec.glsl): 1, or st_interiorWeight for a dense interior texel.
+  float weight = st_interiorFrom(stored) ? st_interiorWeight : 1.0;
+  gl_FragData[0] = vec4((single + st_scatteredAndAmbient(j)) * weight, weight);
 }

@@ -14,11 +14,11 @@
 //   T(c, z) = T(c', z_q) exp(-tau(c, z))                 (Beer-Lambert)
 // from the first slice (T = 1) away from the light, as the slices do, with T = 1 where
 // the line's texel in the slice before lies outside the grid (the border the slice
-// sweep reads). It stores, per texel, T and the factor (st_stepFactors) that the texel's
-// mean light takes from the light entering it (image load/store: one fragment writes
-// every slice of its line). The mean needs the light of the slice before between lines
+// sweep reads). It stores, per texel, T and the factor (st_stepFactors) that the light
+// entering the texel takes from the light at q (image load/store: one fragment writes
+// every slice of its line). That needs the light of the slice before between lines
 // (interpolated at q + e(z_q)), so a second, layered draw computes it
-// (scatterer_transport_line_mean.glsl) every few draws of the lines, for their slices
+// (scatterer_transport_line_texels.glsl) every few draws of the lines, for their slices
 // (the lines' texture holds those and the slice before them: st_lineSlot). The lines go
 // st_chunkSlices slices a draw, each draw taking up T where the one before left it
 // (st_lineStart) and covering only the lines with a texel in the grid in its slices: the
@@ -30,7 +30,7 @@
 //VTK::Transport::Common
 //VTK::Transport::Sweep
 in vec2 texCoord;
-// Per texel (T, mean factor), sweep order, a ring of slices (st_lineSlot).
+// Per texel (T, entering factor), sweep order, a ring of slices (st_lineSlot).
 layout(rg16f) writeonly uniform image3D st_lines;
 uniform vec2 st_lineOrigin;     // the index k of pixel 0 (the draws cover what they need)
 uniform float st_firstSlice;    // the sweep's first slice (nearest the light)

@@ -7,14 +7,15 @@
 // source is the mean over its block of st_block^3 fine texels q of the light
 // scattered once there,
 //   S(q) = sigma_s(q) A(q)
-// with A the light arriving unscattered (scatterer_transport_arriving.glsl), taken at
-// q's centre from its texel's mean: st_fineScattering holds sigma_s(q) / cosh(tau_half(q))
-// (pass 0a, scatterer_transport_medium.glsl). Outside the grid the medium is empty.
+// with A the light arriving unscattered (scatterer_transport_arriving.glsl), the texel's
+// mean from the light entering it: st_fineScattering holds
+// sigma_s(q) (1 - exp(-2x)) / (2x), x half the texel's optical depth (pass 0a,
+// scatterer_transport_medium.glsl). Outside the grid the medium is empty.
 //============================================================================
 //VTK::Transport::Common
 //VTK::Transport::Arriving
 in vec2 texCoord;
-uniform sampler3D st_fineScattering; // pass 0a: rgb = sigma_s / cosh(tau_half)
+uniform sampler3D st_fineScattering; // pass 0a: rgb = sigma_s (1 - exp(-2x)) / (2x)
 flat in float st_layer;            // this layer (scatterer_transport_tiles_vs.glsl)
 uniform vec3 st_coarseDims;
 uniform vec3 st_coarseToGrid;      // coarse texel c covers fine positions c * st_block + st_coarseToGrid + [0, st_block)

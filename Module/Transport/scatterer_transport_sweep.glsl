@@ -30,25 +30,24 @@
 // Positional lights keep the bilinear read: their lines diverge, no shift serves a
 // whole slice.
 //
-// The slices carry T(p); the transmittance texture holds the texel's mean along the
-// line, the mean of the light entering and leaving it:
-//   T_texel = (T_in + T_out) / 2 = T(p) cosh(tau_half)
-// with tau_half the optical depth from the texel's face toward the light to p, and the
-// texel's far half taken as its near half (the sweep samples only between q and p).
-// - Optically thin texel: T(p) to O(tau_half^2) (skin, opacity 0.1 per mm: about
-//   1 % per texel).
-// - Thick texel: T_in / 2. Bone (opacity 0.8 per mm) is several mean free paths deep
-//   in one texel, and there T(p) = T_in exp(-tau_half) depends on where a surface
-//   cuts the texel: it showed the grid as moire on a skull and streaks on a thin
-//   dense plate. T_in / 2 is the light the view ray's samples get: a ray sees the
-//   first mean free paths of a thick medium, lit at T_in exp(-s / mu_l), and weighted
-//   as the ray composites them they average T_in mu_l / (mu_l + mu_v), T_in / 2
-//   under the headlight (mu: cosines of the light's and the view's angles to the
-//   surface).
-// - Limit: a surface through p itself, with nothing in the near half, still reads
-//   T_in there. Sampling the far half as well fixes that but makes the far side of a
-//   thick texel read T_in / 2 too, light it does not get (tried: the shell + plate
-//   benchmark scene moved from the reference, RMSE 0.0036 to 0.0043).
+// The slices carry T(p); the transmittance texture holds the light entering the texel,
+// at its face toward the light:
+//   T_in = T(q) exp(-tau_far)
+// tau_far the optical depth from q to that face (st_stepFactors). In a thin texel that
+// is T(p) to O(tau_half) (skin, opacity 0.1 per mm: about 10 % per texel). In a dense one
+// (bone, opacity 0.8 per mm, is several mean free paths deep in one texel) T(p) =
+// T_in exp(-tau_half) depends on where a surface cuts the texel, and it drew the grid
+// on dense surfaces (moire on a skull, streaks on a plate, terraces on a ball). T_in
+// does not: it is the light that reaches the texel's matter, whatever depth the
+// surface lies at inside it. The texels behind a dense surface hold hardly any light;
+// the gather weights the interior ones down so that a ray's read at the surface takes
+// the surface's texels (scatterer_transport_gather.glsl). Left: a ray composites the
+// first mean free paths of a dense medium, lit at T_in exp(-s / mu_l), to
+// T_in mu_l / (mu_l + mu_v) (mu: cosines of the light's and the view's angles to the
+// surface), T_in / 2 under the headlight; the read gives them T_in. Against the Monte
+// Carlo reference T_in came closer on all five accuracy scenes than the texel's mean
+// along the line, (T_in + T_out) / 2, which gave T_in / 2 in dense texels and the grid's
+// layers as terraces (docs/model.md).
 //
 // A piece of a distributed volume (vtkScattererLightExchange): the light that enters
 // what the piece holds (its voxels and ghost layers) has already crossed the pieces
@@ -56,7 +55,8 @@
 // light-space map st_enteringDepth holds (scatterer/LightSpace.h). By Beer-Lambert
 // over the parts of the path,
 //   T(p) = T_piece(p) * exp(-tau_front(line through p))
-// The slices carry T_piece; the transmittance texture gets T (its texel mean).
+// The slices carry T_piece; the transmittance texture gets T (the light entering the
+// texel).
 //============================================================================
 //VTK::Transport::Common
 //VTK::Transport::Sweep
@@ -73,8 +73,8 @@ void main()
 {
   vec3 js = vec3(floor(texCoord * st_sweepDims.xy), st_slice);
   vec3 j = transpose(st_toSweep) * js;
-  float T = 1.0;     // at the texel's centre p: carried to the next slice
-  float Tmean = 1.0; // over the texel along the line: what the texture holds
+  float T = 1.0;         // at the texel's centre p: carried to the next slice
+  float Tentering = 1.0; // entering the texel: what the texture holds
   if (st_hasPrevious != 0)
   {
 #if ST_SWEEP_POSITIONAL
@@ -102,10 +102,10 @@ void main()
 #endif
     float tau, tauHalf;
     st_stepDepth(j, stepGrid, len, tau, tauHalf);
-    float meanFactor;
-    T = Tcarried * st_stepFactors(tau, tauHalf, meanFactor);
-    Tmean = Tq * meanFactor;
+    float enteringFactor;
+    T = Tcarried * st_stepFactors(tau, tauHalf, enteringFactor);
+    Tentering = Tq * enteringFactor;
   }
   gl_FragData[0] = vec4(T);
-  gl_FragData[1] = vec4(st_storedTransmittance(Tmean, j));
+  gl_FragData[1] = vec4(st_storedTransmittance(Tentering, j));
 }

@@ -1,7 +1,7 @@
 //============================================================================
 // Light transport volume: what the sweeps of pass 1 share (the slice by slice sweep,
 // scatterer_transport_sweep.glsl, and a directional light's lines swept in parallel,
-// scatterer_transport_lines.glsl and scatterer_transport_line_mean.glsl): the step
+// scatterer_transport_lines.glsl and scatterer_transport_line_texels.glsl): the step
 // toward the light, the optical depth over it, a slice's shift, and the depth in
 // front of a piece of a distributed volume. The sweep's conventions and equations are
 // at the top of scatterer_transport_sweep.glsl.
@@ -43,9 +43,9 @@ void st_stepTowardLight(vec3 toward, out vec3 stepSweep, out vec3 stepGrid, out 
 }
 
 // A directional light's lines (scatterer_transport_lines.glsl) keep only the slices
-// their mean (scatterer_transport_line_mean.glsl) has yet to read: st_lineSlots of them,
+// their mean (scatterer_transport_line_texels.glsl) has yet to read: st_lineSlots of them,
 // a ring, slice z in layer z mod st_lineSlots. The mean follows every few draws of the
-// lines (kMeanSlices, ScattererTransportLightPasses.cxx), so the ring holds their slices
+// lines (kTexelSlices, ScattererTransportLightPasses.cxx), so the ring holds their slices
 // and the slice before them, not the whole sweep (4 bytes a transport voxel).
 uniform int st_lineSlots;
 int st_lineSlot(float z)
@@ -69,11 +69,12 @@ vec2 st_sliceShift(float z, vec2 a)
 //   tau     = tauHalf + len / 2 * sigmaBar(j + stepGrid)
 // sigma the extinction along light paths in the volume (st_attenuationAt), sigmaBar its
 // mean over a texel (pass 0a, st_fineExtinction, read trilinearly between texels; 0
-// outside the grid). The near half keeps the volume's resolution: it decides the texel's
-// own mean light (st_stepFactors), which lights a surface inside it. The far half only
-// passes the light on; there the texel it lies in stands for all of its matter rather
-// than for points of one line through it, at one read of a one-channel texture instead
-// of a volume read and a table read a point. Against the Monte Carlo reference the
+// outside the grid). The near half keeps the volume's resolution: it decides how much of
+// the light entering the texel passes its centre on. The far half, what the light
+// crosses before it enters the texel (st_stepFactors), is in the texel before; there
+// that texel stands for all of its matter rather than for points of one line through
+// it, at one read of a one-channel texture instead of a volume read and a table read a
+// point. Against the Monte Carlo reference the
 // defaults of all three benchmark scenes moved closer, and a light kit's sweeps took
 // about 5 % less time (docs/model.md, the sweep). With S = 1 (a texel of one voxel) the
 // one sample, on the face, serves both halves, as before: the mean would add a read,
@@ -97,17 +98,15 @@ void st_stepDepth(vec3 j, vec3 stepGrid, float len, out float tau, out float tau
 }
 
 // Over a step of optical depth tau (tauHalf inside the texel): the light's factor,
-// exp(-tau), returned, and the factor of the texel's mean light over the light entering
-// it at q, T_q:
-//   (T_in + T_out) / 2 = T_q exp(-tau) cosh(tauHalf)
-// written with exponents <= 0 (tauHalf <= tau): T cosh(tauHalf) overflows to 0 * inf in
-// opaque voxels hundreds of mean free paths deep. Two exponentials for both:
-// exp(-tau) = exp(-tauHalf) exp(tauHalf - tau) and exp(-tauHalf - tau) = exp(-tauHalf)^2
-// exp(tauHalf - tau) (a sweep 5 % cheaper than with three on llvmpipe).
-float st_stepFactors(float tau, float tauHalf, out float meanFactor)
+// exp(-tau), returned, and the factor of the light entering the texel (at its face
+// toward the light, what the transmittance texture holds: scatterer_transport_sweep.glsl)
+// over the light at q, T_q:
+//   T_in = T_q exp(-(tau - tauHalf))                      (Beer-Lambert)
+// Two exponentials for both, each with an exponent <= 0 (tauHalf <= tau).
+float st_stepFactors(float tau, float tauHalf, out float enteringFactor)
 {
   float inside = exp(-tauHalf), beyond = exp(tauHalf - tau);
-  meanFactor = 0.5 * beyond * (1.0 + inside * inside);
+  enteringFactor = beyond;
   return inside * beyond;
 }
 
@@ -141,10 +140,10 @@ float st_depthInFront(vec3 i)
 #endif
 }
 
-// What the transmittance texture holds for the texel of grid position j: its mean
-// light, times the light the pieces in front of it leave.
-float st_storedTransmittance(float Tmean, vec3 j)
+// What the transmittance texture holds for the texel of grid position j: the light
+// entering it, times the light the pieces in front of it leave.
+float st_storedTransmittance(float Tentering, vec3 j)
 {
   vec3 index = (st_texToIndex * vec4(st_gridToTexture(j), 1.0)).xyz;
-  return Tmean * exp(-st_depthInFront(index));
+  return Tentering * exp(-st_depthInFront(index));
 }

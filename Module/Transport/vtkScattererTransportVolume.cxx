@@ -320,20 +320,38 @@ std::vector<float> vtkScattererTransportVolume::ReadTransmittance(
 
 std::vector<float> vtkScattererTransportVolume::ReadLight(vtkOpenGLRenderWindow* window)
 {
+  const std::vector<float> rgba = this->ReadWeightedLight(window);
+  std::vector<float> rgb;
+  rgb.reserve(rgba.size() / 4 * 3);
+  for (size_t i = 0; i < rgba.size(); i += 4)
+  {
+    const float weight = rgba[i + 3];
+    rgb.insert(rgb.end(), { rgba[i] / weight, rgba[i + 1] / weight, rgba[i + 2] / weight });
+  }
+  return rgb;
+}
+
+std::vector<float> vtkScattererTransportVolume::ReadLightWeights(vtkOpenGLRenderWindow* window)
+{
+  const std::vector<float> rgba = this->ReadWeightedLight(window);
+  std::vector<float> weights;
+  weights.reserve(rgba.size() / 4);
+  for (size_t i = 3; i < rgba.size(); i += 4)
+  {
+    weights.push_back(rgba[i]);
+  }
+  return weights;
+}
+
+std::vector<float> vtkScattererTransportVolume::ReadWeightedLight(vtkOpenGLRenderWindow* window)
+{
   vtkInternals& s = *this->Internals;
   if (!window || s.Context != window || !s.Textures.Light)
   {
     return {};
   }
   window->MakeCurrent();
-  const std::vector<float> rgba = scatterer_gpu::DownloadTexture3D(s.Textures.Light, 4);
-  std::vector<float> rgb;
-  rgb.reserve(rgba.size() / 4 * 3);
-  for (size_t i = 0; i < rgba.size(); i += 4)
-  {
-    rgb.insert(rgb.end(), { rgba[i], rgba[i + 1], rgba[i + 2] });
-  }
-  return rgb;
+  return scatterer_gpu::DownloadTexture3D(s.Textures.Light, 4);
 }
 
 vtkScattererTransportVolume::DiffusionReadBack vtkScattererTransportVolume::ReadDiffusion(

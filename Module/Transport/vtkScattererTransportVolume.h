@@ -247,14 +247,19 @@ public:
   size_t GetGPUBytes() const;
 
   /**
-   * For tests: the transmittance of light @p light of the last build (each texel's
-   * mean along the light's line, scatterer_transport_sweep.glsl), in grid order
+   * For tests: the transmittance of light @p light of the last build (the light
+   * entering each texel, scatterer_transport_sweep.glsl), in grid order
    * (x fastest), rebuilt for that light alone. Empty if none.
    */
   std::vector<float> ReadTransmittance(vtkOpenGLRenderWindow* window, int light);
 
-  /** For tests: the received-light texture read back, RGB per grid texel. */
+  /** For tests: the received light read back, RGB per grid texel (what the texture
+   * holds divided by the texel's weight in the ray's read). */
   std::vector<float> ReadLight(vtkOpenGLRenderWindow* window);
+
+  /** For tests: each grid texel's weight in the ray's read of the light (1, or less for
+   * a dense interior texel: scatterer_transport_gather.glsl). */
+  std::vector<float> ReadLightWeights(vtkOpenGLRenderWindow* window);
 
   /** For tests: the diffusion's coarse grid of the last build, read back from its
    * textures; each array RGBA per coarse texel in grid order (x fastest). */
@@ -327,6 +332,9 @@ protected:
 private:
   vtkScattererTransportVolume(const vtkScattererTransportVolume&) = delete;
   void operator=(const vtkScattererTransportVolume&) = delete;
+
+  // The light texture read back as it holds it: RGB times the weight, and the weight.
+  std::vector<float> ReadWeightedLight(vtkOpenGLRenderWindow* window);
 
   struct vtkInternals;
   std::unique_ptr<vtkInternals> Internals;

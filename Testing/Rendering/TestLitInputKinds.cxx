@@ -271,9 +271,10 @@ void Check(Kind kind, const char* feature)
   ASSERT_GT(shown, 2000) << "the scene is visible";
   EXPECT_LE(holes, shown / 100) << "black holes where the stock mapper shows the volume";
   EXPECT_GT(shadowed, 200) << "no shadow: the ball does not occlude the plate's light";
-  // Shadow and all, the picture keeps most of stock's brightness (no dark mud, no colour
-  // counted twice: that measured 0.28x).
-  EXPECT_GT(brightness, 0.6);
+  // Shadow and all, the picture keeps about half of unshaded stock's brightness or more
+  // (no dark mud, no colour counted twice: that measured 0.28x). An unoccluded face
+  // shows kd 0.7 (VTK's default) times the display's exposure 0.8 of its colour.
+  EXPECT_GT(brightness, 0.45);
   EXPECT_LT(brightness, 1.3);
 }
 }

@@ -141,9 +141,11 @@ struct Counts
   double Brightness = 0.0;
 };
 
-// Over the pixels where the stock mapper shows the scene: black ones, ones under half
-// as bright as in `unshadowed` (the same scene without the ball's matter), and the
-// brightness relative to stock.
+// Over the pixels where the stock mapper shows the scene: black ones outside the ball's
+// shadow, ones under half as bright as in `unshadowed` (the same scene without the
+// ball's matter), and the brightness relative to stock. The umbra of the dense ball may
+// be black: one light, no ambient, and the plate's own multiple scattering escapes
+// through its faces before it gets far under the ball.
 Counts Count(const Pictures& p, const Pictures& unshadowed)
 {
   Counts n;
@@ -158,8 +160,9 @@ Counts Count(const Pictures& p, const Pictures& unshadowed)
       ++n.Shown;
       stockSum += s;
       litSum += l;
-      n.Holes += l < 9 ? 1 : 0;
-      n.Shadowed += 2 * l < u ? 1 : 0;
+      const bool shadowed = 2 * l < u;
+      n.Holes += l < 9 && !shadowed ? 1 : 0;
+      n.Shadowed += shadowed ? 1 : 0;
     }
   }
   n.Brightness = litSum / std::max(stockSum, 1.0);

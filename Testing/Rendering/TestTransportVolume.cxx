@@ -220,8 +220,10 @@ TEST(TransportVolume, SlabAxisAlignedLightIsBeerLambert)
   const double sigma = -std::log(1.0 - 0.1);
   for (int k : { 20, 16, 12, 8, 4 })
   {
-    // Steps from k up to the slab's top voxel (23) whose midpoints lie in the slab.
-    const double depth = 23.0 - std::max(k, 7);
+    // The light entering texel k, at its face toward the light (z = k + 1/2): the path
+    // from there up to the slab's top voxel (23) inside the slab (the steps' midpoints
+    // sample it: the slab's matter reaches down to z = 7).
+    const double depth = 23.0 - std::max(k + 0.5, 7.0);
     const double expected = std::exp(-sigma * depth);
     EXPECT_NEAR(scene.At(t, 16, 16, k), expected, 0.01 * expected + 1e-3) << "k = " << k;
   }
@@ -242,19 +244,21 @@ TEST(TransportVolume, SlabAtScaleTwoIsBeerLambertThroughTheTexelsMeans)
   const auto at = [&](int k) { return t[8 + g * (8 + static_cast<size_t>(g) * k)]; };
   const double sigma = -std::log(1.0 - 0.1);
   // Inside the slab each step crosses 2 voxels of it: exp(-2 sigma) from texel to texel
-  // (each texel's mean light is its centre's times the same factor, which cancels).
+  // (each texel holds the light entering it, its centre's times the same factor, which
+  // cancels).
   for (int k : { 10, 8, 6 })
   {
     EXPECT_NEAR(at(k - 1) / at(k), std::exp(-2.0 * sigma), 0.01 * std::exp(-2.0 * sigma))
       << "from texel " << k << " (voxel " << 2 * k << ") down one";
   }
-  // Where the light has crossed the slab's top: the depth at voxel 20 puts the face on
-  // the top voxel's centre, z = 23, as at TransportScale 1 (SlabAxisAlignedLightIsBeerLambert).
+  // Where the light has crossed the slab's top: the light entering texel 10 (voxel 20), at
+  // its face toward the light (voxel 21), puts the slab's face on the top voxel's centre,
+  // z = 23, as at TransportScale 1 (SlabAxisAlignedLightIsBeerLambert).
   // The samples there lie on the voxels' faces (the means at +-0.5 voxel, the near half
   // at +0.5), where nearest interpolation takes the voxel above; the field's face is at
   // 23.5, half a voxel off.
-  const double face = 20.0 - std::log(at(10)) / sigma;
-  EXPECT_NEAR(face, 23.0, 0.25) << "T = " << at(10) << " at voxel 20";
+  const double face = 21.0 - std::log(at(10)) / sigma;
+  EXPECT_NEAR(face, 23.0, 0.25) << "T = " << at(10) << " entering at voxel 21";
   EXPECT_NEAR(at(14), 1.0, 1e-3) << "above the slab the light is unattenuated";
 }
 
@@ -428,7 +432,8 @@ TEST(TransportVolume, SlabObliqueLightIsBeerLambert)
   const double sigma = -std::log(1.0 - 0.08);
   for (int k : { 25, 20, 15, 10 })
   {
-    const double expected = std::exp(-sigma * (29.0 - k) / std::cos(angle));
+    // The light entering texel k, at its face toward the light (z = k + 1/2).
+    const double expected = std::exp(-sigma * (29.0 - (k + 0.5)) / std::cos(angle));
     EXPECT_NEAR(scene.At(t, 20, 20, k), expected, 0.01 * expected + 2e-3) << "k = " << k;
   }
 }
@@ -450,10 +455,11 @@ TEST(TransportVolume, SlabPositionalLightIsBeerLambertAlongTheRay)
   for (int i : { 19, 28, 35 })
   {
     const int k = 15;
-    // The ray from (i, 20, k) to the light crosses the slab from z = k to z = 29.
+    // The ray from (i, 20, k) to the light enters the texel at z = k + 1/2 (the light
+    // entering it) after crossing the slab from there to z = 29.
     const double dx = lx - i, dy = ly - 20, dz = lz - k;
     const double length = std::sqrt(dx * dx + dy * dy + dz * dz);
-    const double inside = length * (29.0 - k) / dz;
+    const double inside = length * (29.0 - (k + 0.5)) / dz;
     const double expected = std::exp(-sigma * inside);
     EXPECT_NEAR(scene.At(t, i, 20, k), expected, 0.01 * expected + 2e-3) << "i = " << i;
   }
@@ -913,7 +919,7 @@ TEST(TransportVolume, LightsAddUpWhateverTheirOrder)
   // Every term of the light is linear in each light's transmittance with weights that do
   // not depend on the light, so the lights add up: a build of several lights sums the
   // light each brings (a directional light swept in parallel in its own mean draw,
-  // scatterer_transport_line_mean.glsl, the others by scatterer_transport_arrive.glsl), a
+  // scatterer_transport_line_texels.glsl, the others by scatterer_transport_arrive.glsl), a
   // build of one directional light reads it from its transmittance. Three lights give
   // the sum of each alone, in any order: a spot light's cone and attenuation count the
   // same first or last. Both with the directional lights' lines swept in parallel and
@@ -1289,8 +1295,10 @@ TEST(TransportVolume, DiffusionAtlasHoldsTheJacobiSolveAndTheGatherReadsItTrilin
   };
 
   // One Jacobi step: phi = (S + D sum_a (phi(x + e_a) + phi(x - e_a)) / h_a^2)
-  //                        / (2 D sum_a 1 / h_a^2 + sigma_a),  0 where there is no medium.
-  double worstStep = 0.0, largest = 0.0, fromLayers = 0.0;
+  //                        / (2 D sum_a 1 / h_a^2 + sigma_a + escape),  0 where there is no
+  // medium; escape = sum over the faces toward no medium (or past the grid) of
+  // max(0, 1 / (2 h_a) - D / h_a^2) (Marshak's free surface).
+  double worstStep = 0.0, largest = 0.0, fromLayers = 0.0, escaping = 0.0;
   for (int z = 0; z < d[2]; ++z)
   {
     for (int y = 0; y < d[1]; ++y)
@@ -1326,9 +1334,23 @@ TEST(TransportVolume, DiffusionAtlasHoldsTheJacobiSolveAndTheGatherReadsItTrilin
             const double layers = (before(0, 0, 1) + before(0, 0, -1)) * inv2[2];
             const double neighbours = (before(1, 0, 0) + before(-1, 0, 0)) * inv2[0] +
               (before(0, 1, 0) + before(0, -1, 0)) * inv2[1] + layers;
+            double escape = 0.0;
+            for (int a = 0; a < 3; ++a)
+            {
+              for (int side : { -1, 1 })
+              {
+                int p[3] = { x, y, z };
+                p[a] += side;
+                const bool open = p[a] < 0 || p[a] >= d[a] ||
+                  !(coarse.Medium[4 * index(p[0], p[1], p[2]) + 3] > 1.0e-6f);
+                escape += open ? std::max(0.0, 0.5 / coarse.H[a] - D * inv2[a]) : 0.0;
+              }
+            }
             const double sigmaA = sigma * (1.0 - coarse.Medium[4 * i + ch]);
-            expected = (coarse.Source[4 * i + ch] + D * neighbours) / (2.0 * D * sum + sigmaA);
-            fromLayers = std::max(fromLayers, D * layers / (2.0 * D * sum + sigmaA));
+            const double out = 2.0 * D * sum + sigmaA + escape;
+            expected = (coarse.Source[4 * i + ch] + D * neighbours) / out;
+            fromLayers = std::max(fromLayers, D * layers / out);
+            escaping = std::max(escaping, escape / out);
           }
           const double got = coarse.Fluence[4 * i + ch];
           worstStep = std::max(worstStep, std::abs(got - expected) / (std::abs(expected) + 1.0e-4));
@@ -1411,23 +1433,25 @@ TEST(TransportVolume, DiffusionAtlasHoldsTheJacobiSolveAndTheGatherReadsItTrilin
   EXPECT_LT(worstAmbient, 2.0e-3 * std::max(1.0, k))
     << "the gather does not read the occlusion trilinearly";
   std::printf("atlas: coarse %dx%dx%d; Jacobi step worst %g (relative), fluence up to %g, "
-              "%g of it from the layers before and after; trilinear read worst %g, the "
-              "diffusion adds up to %g\n",
-    d[0], d[1], d[2], worstStep, largest, fromLayers, worstRead, added);
+              "%g of it from the layers before and after, up to %g of the loss by escape; "
+              "trilinear read worst %g, the diffusion adds up to %g\n",
+    d[0], d[1], d[2], worstStep, largest, fromLayers, escaping, worstRead, added);
   EXPECT_GT(fromLayers, 0.05 * largest)
     << "little fluence comes from the neighbouring layers: they are hardly checked";
+  EXPECT_GT(escaping, 0.1) << "no light escapes at a free surface: the escape is not checked";
   EXPECT_GT(added, 0.01) << "the scene shows no multiple scattering: nothing is compared";
   EXPECT_LT(worstStep, 2.0e-3) << "the last iteration is not a Jacobi step of the one before";
   EXPECT_LT(worstRead, 2.0e-3) << "the gather does not read the fluence trilinearly";
 }
 
-TEST(TransportVolume, ThickTexelHoldsTheMeanOfTheLightEnteringAndLeavingIt)
+TEST(TransportVolume, ThickTexelHoldsTheLightEnteringIt)
 {
   // A dense slab (opacity 0.9 per unit: 2.3 mean free paths per texel) lit from above.
-  // The sweep carries T(p) at texel centres; the texture holds each texel's mean along
-  // the line, (T_in + T_out) / 2 = T(p) cosh(tau / 2), for the step's optical depth tau
-  // (scatterer_transport_sweep.glsl). In such a texel the two differ by 1.74x: T(p)
-  // alone is the light half a texel deep, which is what showed the grid on bone.
+  // The sweep carries T(p) at texel centres; the texture holds the light entering each
+  // texel, at its face toward the light, T_in = T(p) exp(tau / 2) for the step's optical
+  // depth tau (scatterer_transport_sweep.glsl): 3.16x T(p) here, and 1.82x the texel's
+  // mean along the line, (T_in + T_out) / 2 = T(p) cosh(tau / 2), which it held before
+  // (and which drew the texel layers on dense surfaces).
   const int n = 32;
   LitSlab slab(n, 1.0, 8, 23, 0.9, 0, 0, 1);
   TransportScene& scene = slab.Scene;
@@ -1438,16 +1462,91 @@ TEST(TransportVolume, ThickTexelHoldsTheMeanOfTheLightEnteringAndLeavingIt)
   {
     // The sweep's midpoint samples: the steps from k up to voxel 23 lie in the slab.
     const double centre = std::exp(-sigma * (23.0 - k));
-    const double mean = centre * std::cosh(0.5 * sigma);
-    EXPECT_NEAR(scene.At(t, 16, 16, k), mean, 0.01 * mean) << "k = " << k << ", T(p) = " << centre;
+    const double entering = centre * std::exp(0.5 * sigma);
+    EXPECT_NEAR(scene.At(t, 16, 16, k), entering, 0.01 * entering)
+      << "k = " << k << ", T(p) = " << centre;
   }
+}
+
+TEST(TransportVolume, DenseInteriorTexelsWeighLittleInTheRead)
+{
+  // Texels hold the light entering them; behind a dense surface that is hardly any, and
+  // the ray's trilinear read between the surface's texel and the interior's drew the
+  // texel layers on dense surfaces. A dense texel (optical depth across it above 2) whose
+  // six neighbours are dense is an interior texel: weight 1/64 in the read
+  // (scatterer_transport_gather.glsl), 1 elsewhere.
+  const int n = 32;
+  LitSlab slab(n, 1.0, 8, 23, 0.9, 0, 0, 1); // 2.3 mean free paths a texel
+  TransportScene& scene = slab.Scene;
+  const auto weights =
+    scene.RenderAndRead([](vtkScattererTransportVolume* transport, vtkOpenGLRenderWindow* gl)
+      { return transport->ReadLightWeights(gl); });
+  ASSERT_EQ(weights.size(), static_cast<size_t>(n * n * n));
+  for (int k : { 22, 16, 9 })
+  {
+    EXPECT_FLOAT_EQ(scene.At(weights, 16, 16, k), 1.0f / 64.0f) << "interior texel k = " << k;
+  }
+  for (int k : { 28, 24, 23, 8, 7, 2 })
+  {
+    EXPECT_FLOAT_EQ(scene.At(weights, 16, 16, k), 1.0f) << "k = " << k;
+  }
+  // A slab of 0.3 per unit is not dense (0.36 mean free paths a texel): every weight 1.
+  LitSlab thin(n, 1.0, 8, 23, 0.3, 0, 0, 1);
+  const auto thinWeights =
+    thin.Scene.RenderAndRead([](vtkScattererTransportVolume* transport, vtkOpenGLRenderWindow* gl)
+      { return transport->ReadLightWeights(gl); });
+  ASSERT_EQ(thinWeights.size(), weights.size());
+  EXPECT_EQ(*std::min_element(thinWeights.begin(), thinWeights.end()), 1.0f);
+}
+
+TEST(TransportVolume, DenseFaceIsLitAlikeWhereverTheTexelsCutIt)
+{
+  // A dense slab seen and lit from above at TransportScale 2, its top face at z = 22.5 or
+  // 23.5: in the upper half of a texel (texel 11 spans z 21 to 23) or in the lower
+  // quarter of the next. The face receives the same light either way, and it must show
+  // alike: the read at the face takes the light entering the face's texels, whatever
+  // depth the face lies at inside them. Blending in the dark texels behind it (weight 1
+  // instead of 1/64) drew such faces as terraces a texel apart on a dense ball.
+  double shown[2] = { 0.0, 0.0 };
+  for (int top : { 22, 23 })
+  {
+    LitSlab slab(33, 1.0, 8, top, 0.9, 0, 0, 1);
+    TransportScene& scene = slab.Scene;
+    scene.Mapper->SetTransportScale(2);
+    // Grey, and the light scattered once alone: far from the display's ceiling.
+    vtkNew<vtkColorTransferFunction> grey;
+    grey->AddRGBPoint(0, 0.8, 0.8, 0.8);
+    grey->AddRGBPoint(255, 0.8, 0.8, 0.8);
+    scene.Property->SetColor(grey);
+    scene.Mapper->SetMultipleScattering(0.0);
+    scene.Renderer->ResetCamera(); // looks down -z, at the lit face
+    const auto pixels = scatterer_testing::RenderSceneOnce(scene.Renderer, scene.Mapper);
+    const int* size = scatterer_testing::SharedWindow()->GetSize();
+    // The middle quarter of the picture: the face alone.
+    double sum = 0.0;
+    int count = 0;
+    for (int y = size[1] * 3 / 8; y < size[1] * 5 / 8; ++y)
+    {
+      for (int x = size[0] * 3 / 8; x < size[0] * 5 / 8; ++x)
+      {
+        const size_t q = 4 * (static_cast<size_t>(y) * size[0] + x);
+        sum += pixels[q] + pixels[q + 1] + pixels[q + 2];
+        ++count;
+      }
+    }
+    shown[top - 22] = sum / (3.0 * count);
+  }
+  std::printf("dense face at z = 22.5: %.1f levels, at 23.5: %.1f\n", shown[0], shown[1]);
+  EXPECT_GT(shown[0], 60.0) << "the lit face is dark: nothing is compared";
+  EXPECT_NEAR(shown[1] / shown[0], 1.0, 0.03);
 }
 
 TEST(TransportVolume, OpaqueVoxelsManyMeanFreePathsDeepStayFinite)
 {
   // Opacity 1 per unit in voxels 20 units wide: hundreds of mean free paths per texel,
-  // where exp(-tau) underflows and cosh(tau / 2) overflows in single precision. The texel
-  // mean must still be a number in [0, 1], and so must the light received.
+  // where exp(-tau) underflows and exp(tau / 2) overflows in single precision. The light
+  // entering a texel must still be a number in [0, 1], and the light received finite
+  // (interior texels of weight 1/64 included, divided out by ReadLight).
   const int n = 16;
   LitSlab slab(n, 20.0, 4, 11, 1.0, 0.3, 0.2, 1.0);
   TransportScene& scene = slab.Scene;

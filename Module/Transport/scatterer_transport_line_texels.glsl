@@ -2,13 +2,13 @@
 //VTK::Output::Dec
 //============================================================================
 // Light transport volume, pass 1 for a directional light, second draw (every few draws
-// of the lines, the layers of their slices): each texel's mean light, from what its
-// line carried (scatterer_transport_lines.glsl): the light entering it, read from the
-// slice before at q + e(z_q) where that slice holds T(q), times its mean factor; as
+// of the lines, the layers of their slices): the light entering each texel, from what
+// its line carried (scatterer_transport_lines.glsl): the light of the slice before, read
+// at q + e(z_q) where that slice holds T(q), times the texel's entering factor; as
 // scatterer_transport_sweep.glsl computes it slice by slice.
 //
 // The value of a texel depends on nothing but the lines, so the draw may take the
-// texels in any order. ST_LINE_MEAN_ARRIVING:
+// texels in any order. ST_LINE_TEXELS_ARRIVING:
 // - 0: into the transmittance texture, sweep order (the direct light, tests);
 // - 1: the light's share of the light arriving, E_l T_l, straight into the arriving
 //   light (grid order, one texel more a side, where T = 1; the lights added up by
@@ -18,15 +18,15 @@
 //VTK::Transport::Common
 //VTK::Transport::Sweep
 in vec2 texCoord;
-// Per texel (T, mean factor), sweep order, a ring of slices (st_lineSlot); its border
+// Per texel (T, entering factor), sweep order, a ring of slices (st_lineSlot); its border
 // reads 1.
 uniform sampler3D st_lines;
 flat in float st_layer;          // this layer (scatterer_transport_layers_gs.glsl)
-uniform vec3 st_lightColor;      // ST_LINE_MEAN_ARRIVING: E_l
+uniform vec3 st_lightColor;      // ST_LINE_TEXELS_ARRIVING: E_l
 uniform float st_firstSlice;     // the sweep's first slice (nearest the light): T = 1
 
-// The mean light of the texel at sweep position js (a texel of the grid).
-float st_lineMean(vec3 js)
+// The light entering the texel at sweep position js (a texel of the grid).
+float st_lineTexel(vec3 js)
 {
   if (js.z == st_firstSlice)
   {
@@ -42,16 +42,16 @@ float st_lineMean(vec3 js)
 
 void main()
 {
-#if ST_LINE_MEAN_ARRIVING
+#if ST_LINE_TEXELS_ARRIVING
   vec3 j = vec3(floor(texCoord * (st_gridDims.xy + 2.0)), st_layer) - vec3(1.0);
   float T = 1.0; // outside the grid the light has crossed no matter
   if (all(greaterThanEqual(j, vec3(0.0))) && all(lessThan(j, st_gridDims)))
   {
-    T = st_storedTransmittance(st_lineMean(st_toSweep * j), j);
+    T = st_storedTransmittance(st_lineTexel(st_toSweep * j), j);
   }
   gl_FragData[0] = vec4(st_lightColor * T, 1.0);
 #else
   vec3 js = vec3(floor(texCoord * st_sweepDims.xy), st_layer);
-  gl_FragData[0] = vec4(st_storedTransmittance(st_lineMean(js), transpose(st_toSweep) * js));
+  gl_FragData[0] = vec4(st_storedTransmittance(st_lineTexel(js), transpose(st_toSweep) * js));
 #endif
 }
