@@ -64,14 +64,21 @@ float st_meanAttenuation(vec3 j, int n)
 // the next texel dark (the light entering it has crossed the surface) and, by its
 // centre, not interior; the blend with it drew the grid's faces on a dense ball.
 const float st_denseDepth = 2.0;
-bool st_isDense(vec3 j)
+bool st_isDense(float meanAttenuation)
 {
-  return st_meanAttenuation(j, st_meanPoints) * st_fineSize > st_denseDepth;
+  return meanAttenuation * st_fineSize > st_denseDepth;
 }
 
-bool st_isInterior(vec3 j)
+bool st_isDense(vec3 j)
 {
-  bool interior = st_isDense(j);
+  return st_isDense(st_meanAttenuation(j, st_meanPoints));
+}
+
+// Texel j, of mean extinction `own`, is an interior texel (its neighbours' means are
+// taken only when it is dense itself).
+bool st_isInterior(vec3 j, float own)
+{
+  bool interior = st_isDense(own);
   for (int a = 0; a < 3 && interior; ++a)
   {
     vec3 e = vec3(0.0);
@@ -112,7 +119,8 @@ void main()
     }
     gather = float(m) + (mixed ? float(ST_MIXED) : 0.0);
   }
+  float own = st_meanAttenuation(j, st_meanPoints);
   gl_FragData[0] = vec4(medium.rgb * meanOfEntering, 1.0);
-  gl_FragData[1] = vec4(st_storedGather(gather, st_isInterior(j)));
-  gl_FragData[2] = vec4(st_meanPoints > 0 ? st_meanAttenuation(j, st_meanPoints) : 0.0);
+  gl_FragData[1] = vec4(st_storedGather(gather, st_isInterior(j, own)));
+  gl_FragData[2] = vec4(st_meanPoints > 0 ? own : 0.0);
 }
