@@ -67,6 +67,7 @@ vec2 st_sliceShift(float z, vec2 a)
 // (ExtinctionSampling: one a volume voxel),
 //   tauHalf = len / S * sum_{f_i <= 1/2} w_i sigma(j + f_i stepGrid)   (w_i = 1/2 on the face, else 1)
 //   tau     = tauHalf + len / 2 * sigmaBar(j + stepGrid)
+// (S = 1: below).
 // sigma the extinction along light paths in the volume (st_attenuationAt), sigmaBar its
 // mean over a texel (pass 0a, st_fineExtinction, read trilinearly between texels; 0
 // outside the grid). The near half keeps the volume's resolution: it decides how much of
@@ -76,24 +77,29 @@ vec2 st_sliceShift(float z, vec2 a)
 // it, at one read of a one-channel texture instead of a volume read and a table read a
 // point. Against the Monte Carlo reference the
 // defaults of all three benchmark scenes moved closer, and a light kit's sweeps took
-// about 5 % less time (docs/model.md, the sweep). With S = 1 (a texel of one voxel) the
-// one sample, on the face, serves both halves, as before: the mean would add a read,
-// and it moved the finest setting of the point-lit scene away (0.0029 to 0.0033).
+// about 5 % less time (docs/model.md, the sweep). With S = 1 (a texel of one voxel) no
+// texel mean is held (it would add a read, and it moved the finest setting of the
+// point-lit scene away, 0.0029 to 0.0033); each half takes one sample, at f = 1/4 and
+// 3/4, inside the texel's voxel and the one before. One sample on the face served both
+// halves until 2026-12-06, but there nearest interpolation (vtkVolumeProperty's default)
+// takes either voxel as the rounding of the texture coordinate falls: rings across lit
+// dense faces (TransportVolume.DenseFaceAtScaleOneShowsNoRings).
 void st_stepDepth(vec3 j, vec3 stepGrid, float len, out float tau, out float tauHalf)
 {
+  if (st_stepSamples == 1)
+  {
+    tauHalf = 0.5 * len * st_attenuationAt(st_gridToTexture(j + stepGrid * 0.25));
+    tau = tauHalf + 0.5 * len * st_attenuationAt(st_gridToTexture(j + stepGrid * 0.75));
+    return;
+  }
   tauHalf = 0.0;
   for (int i = 0; 2 * i + 1 <= st_stepSamples; ++i)
   {
     float f = (float(i) + 0.5) / float(st_stepSamples);
     float a = st_attenuationAt(st_gridToTexture(j + stepGrid * f));
-    tauHalf += f < 0.5 ? a : 0.5 * a; // a sample on the face: half
+    tauHalf += f < 0.5 ? a : 0.5 * a; // a sample on the face (odd S): half
   }
   tauHalf *= len / float(st_stepSamples);
-  if (st_stepSamples == 1)
-  {
-    tau = 2.0 * tauHalf; // the one sample, on the face, serves both halves
-    return;
-  }
   tau = tauHalf + 0.5 * len * texture(st_fineExtinction, (j + stepGrid + vec3(0.5)) / st_gridDims).r;
 }
 
