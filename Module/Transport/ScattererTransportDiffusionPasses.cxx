@@ -23,8 +23,9 @@ namespace scatterer_gpu
 namespace
 {
 // Pass 3a: the multiple-scattering source on the coarse grid (mean light scattered
-// once), from the fine scattering coefficient of pass 0a and the lights' arriving light;
-// on the tiles that hold a medium, the only texels whose source the diffusion reads.
+// once), from the fine scattering coefficient of pass 0a and the lights' arriving light,
+// and in alpha each texel's escape at free faces (from the coarse medium); on the tiles
+// that hold a medium, the only texels whose source the diffusion reads.
 void DrawSource(const TransportPass& pass, const SweepPlan& plan, const CoarseGrid& coarse,
   const CoarseUniforms& u)
 {
@@ -34,7 +35,9 @@ void DrawSource(const TransportPass& pass, const SweepPlan& plan, const CoarseGr
   program->SetUniform3f("st_coarseToGrid", u.ToGrid);
   program->SetUniformi("st_block", coarse.Block);
   program->SetUniformi("st_atlasColumns", u.AtlasColumns);
+  program->SetUniform3f("st_h", u.H);
   ScopedSampler fineScattering(program, "st_fineScattering", pass.Textures.FineScattering);
+  ScopedSampler medium(program, "st_coarseMedium", pass.Textures.CoarseMedium);
   ScopedArrivingLight arriving(program, pass, plan);
   DrawTiles(pass.Framebuffer, program, pass.Textures.CoarseSource, pass.Textures.Tiles);
   pass.Progress.StepDone();

@@ -20,7 +20,9 @@
 // Ishimaru, ch. 9), and in dense matter (D = 1 / (3 sigma_t) << h_a) D phi / h_a is far
 // less: a channel that absorbs nothing (albedo 1) piled its light up and glowed
 // (docs/hard-cases.md). So each such face adds what it lacks,
-//   escape(x) = sum over faces toward no medium of max(0, 1 / (2 h_a) - D / h_a^2).
+//   escape(x) = sum over faces toward no medium of max(0, 1 / (2 h_a) - D / h_a^2),
+// which depends on the coarse medium alone: pass 3a takes it once a build and stores it
+// in the source's alpha (scatterer_transport_source.glsl).
 // The coarse medium comes from pass 0b (scatterer_transport_coarsen.glsl), the
 // source from pass 3a (scatterer_transport_source.glsl); the source and the fluence are
 // the coarse grid's atlases (scatterer_transport_atlas.glsl).
@@ -29,7 +31,7 @@
 in vec2 texCoord;
 flat in float st_layer;            // this layer (scatterer_transport_tiles_vs.glsl)
 uniform sampler3D st_coarseMedium; // coarse grid: rgb albedo, a sigma_t
-uniform sampler2D st_coarseSource; // coarse grid's atlas: rgb the light scattered once
+uniform sampler2D st_coarseSource; // coarse grid's atlas: rgb the light scattered once, a escape(x)
 uniform sampler2D st_previous;     // coarse grid's atlas: phi of the last iteration (rgb)
 uniform int st_first;              // 1: no previous iteration (phi = 0)
 uniform vec3 st_h;                 // coarse texel size along each axis, world units
@@ -45,39 +47,22 @@ vec3 st_phi(ivec3 c)
   return texelFetch(st_previous, st_atlasTexel(c), 0).rgb;
 }
 
-// Coarse texel c holds no medium (the light escapes there), or lies outside the grid.
-bool st_empty(ivec3 c)
-{
-  return any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, ivec3(st_coarseDims))) ||
-    texelFetch(st_coarseMedium, c, 0).a <= 1.0e-6;
-}
-
 void main()
 {
   ivec3 c = ivec3(ivec2(floor(texCoord * st_coarseDims.xy)), int(st_layer));
-  if (st_empty(c))
+  vec4 medium = texelFetch(st_coarseMedium, c, 0);
+  if (medium.a <= 1.0e-6)
   {
     gl_FragData[0] = vec4(0.0);
     return;
   }
-  vec4 medium = texelFetch(st_coarseMedium, c, 0);
-  vec3 S = texelFetch(st_coarseSource, st_atlasTexel(c), 0).rgb;
+  vec4 source = texelFetch(st_coarseSource, st_atlasTexel(c), 0); // rgb S, a escape(x)
   float D = 1.0 / (3.0 * medium.a);
   vec3 inv2 = 1.0 / (st_h * st_h);
   vec3 neighbours = (st_phi(c + ivec3(1, 0, 0)) + st_phi(c - ivec3(1, 0, 0))) * inv2.x +
     (st_phi(c + ivec3(0, 1, 0)) + st_phi(c - ivec3(0, 1, 0))) * inv2.y +
     (st_phi(c + ivec3(0, 0, 1)) + st_phi(c - ivec3(0, 0, 1))) * inv2.z;
   vec3 sigmaA = medium.a * (vec3(1.0) - medium.rgb);
-  float escape = 0.0;
-  for (int a = 0; a < 3; ++a)
-  {
-    for (int side = -1; side <= 1; side += 2)
-    {
-      ivec3 n = c;
-      n[a] += side;
-      escape += st_empty(n) ? max(0.0, 0.5 / st_h[a] - D * inv2[a]) : 0.0;
-    }
-  }
-  vec3 phi = (S + D * neighbours) / (2.0 * D * (inv2.x + inv2.y + inv2.z) + sigmaA + vec3(escape));
+  vec3 phi = (source.rgb + D * neighbours) / (2.0 * D * (inv2.x + inv2.y + inv2.z) + sigmaA + vec3(source.a));
   gl_FragData[0] = vec4(phi, 1.0);
 }
