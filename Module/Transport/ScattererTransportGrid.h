@@ -140,10 +140,10 @@ LightStep StepTowardLight(const TransportGrid& grid, const SweepPlan& plan,
   const vtkScattererTransportVolume::Light& light);
 
 /** How a sweep samples the extinction over a step from a texel toward the light
- * (st_stepDepth, scatterer_transport_sweep_common.glsl), for @p downsample volume voxels
- * per texel. StepSamples points evenly along the step, one a voxel (max(1, downsample));
- * those in its near half, inside the texel, give that half's optical depth. The far half,
- * inside the texel the step reaches, takes that texel's mean extinction over MeanPoints^3
+ * (st_nearHalfDepth, st_farExtinction: scatterer_transport_sweep_common.glsl), for @p downsample
+ * volume voxels per texel. StepSamples points evenly along the step, one a voxel (max(1,
+ * downsample)); those in its near half, inside the texel, give that half's optical depth. The far
+ * half, inside the texel the step reaches, takes that texel's mean extinction over MeanPoints^3
  * points spread evenly over it (pass 0a, TransportTextures::FineExtinction), 2^3 at every
  * scale: one point a voxel along each axis (4^3 at 511x511x215, scale 4) cost about a
  * second a medium change on llvmpipe, and the dragging frames (scale 4 on the CT head)

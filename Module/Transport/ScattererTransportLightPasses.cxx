@@ -298,8 +298,9 @@ bool SweepTransmittance(const TransportPass& pass, const vtkScattererTransportVo
   vtkOpenGLQuadHelper* lines = nullptr;
   vtkOpenGLQuadHelper* texels = nullptr;
   const bool arriving = output != SweepOutput::Transmittance;
+  const bool oneSample = ExtinctionSampling::For(pass.In.Downsample).StepSamples == 1;
   if (!light.Positional && pass.SweepLinesInParallel &&
-    pass.Programs.SweepLines(pass.Window, enteringKind, arriving, lines, texels))
+    pass.Programs.SweepLines(pass.Window, enteringKind, arriving, oneSample, lines, texels))
   {
     const LineRange range = LinesOf(pass.Grid, plan, light, 0, sweepDims[2]);
     const int ringDims[3] = { sweepDims[0], sweepDims[1], LineSlots(sweepDims) };
@@ -344,7 +345,7 @@ bool SweepTransmittance(const TransportPass& pass, const vtkScattererTransportVo
   else
   {
     vtkOpenGLQuadHelper* quad =
-      pass.Programs.Sweep(pass.Window, light.Positional, enteringKind, why);
+      pass.Programs.Sweep(pass.Window, light.Positional, enteringKind, oneSample, why);
     if (!quad || !textures.AllocateSweep(pass.Window, sweepDims, true, why))
     {
       return false;

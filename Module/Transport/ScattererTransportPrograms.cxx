@@ -152,14 +152,16 @@ std::array<std::unique_ptr<vtkOpenGLQuadHelper>*, 10> TransportPrograms::All()
 }
 
 vtkOpenGLQuadHelper* TransportPrograms::Sweep(
-  vtkOpenGLRenderWindow* window, bool positional, int entering, std::string& why)
+  vtkOpenGLRenderWindow* window, bool positional, int entering, bool oneSample, std::string& why)
 {
-  std::unique_ptr<vtkOpenGLQuadHelper>& sweep = this->Sweeps[(positional ? 3 : 0) + entering];
+  oneSample = oneSample && !positional; // a positional light's sweep has no lines' points
+  std::unique_ptr<vtkOpenGLQuadHelper>& sweep =
+    this->Sweeps[(positional ? 3 : (oneSample ? 6 : 0)) + entering];
   if (!sweep)
   {
     const std::string defines = "#define ST_SWEEP_POSITIONAL " +
       std::to_string(positional ? 1 : 0) + "\n#define ST_SWEEP_ENTERING " +
-      std::to_string(entering) + "\n";
+      std::to_string(entering) + "\n#define ST_SWEEP_ONE_SAMPLE " + (oneSample ? "1" : "0") + "\n";
     sweep.reset(new vtkOpenGLQuadHelper(window,
       vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(),
       WithCommon(scatterer_transport_sweep, this->CreatedVariant + defines).c_str(), ""));
@@ -174,7 +176,7 @@ vtkOpenGLQuadHelper* TransportPrograms::Sweep(
 }
 
 bool TransportPrograms::SweepLines(vtkOpenGLRenderWindow* window, int entering, bool arriving,
-  vtkOpenGLQuadHelper*& lines, vtkOpenGLQuadHelper*& texels)
+  bool oneSample, vtkOpenGLQuadHelper*& lines, vtkOpenGLQuadHelper*& texels)
 {
   if (this->LinesRefused || entering < 0 || entering > 1)
   {
@@ -191,19 +193,25 @@ bool TransportPrograms::SweepLines(vtkOpenGLRenderWindow* window, int entering, 
     this->LinesRefused = true;
     return false;
   }
-  const auto defines = [this](int e)
-  { return this->CreatedVariant + "#define ST_SWEEP_ENTERING " + std::to_string(e) + "\n"; };
+  // The lines' draw is the same for every kind (ST_SWEEP_ONE_SAMPLE tells how the texels'
+  // draw takes the light entering a texel).
+  const auto defines = [this](int e, bool one)
+  {
+    return this->CreatedVariant + "#define ST_SWEEP_ENTERING " + std::to_string(e) +
+      "\n#define ST_SWEEP_ONE_SAMPLE " + (one ? "1" : "0") + "\n";
+  };
   if (!this->Lines)
   {
     this->Lines.reset(new vtkOpenGLQuadHelper(window,
       vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(),
-      WithCommon(scatterer_transport_lines, defines(0)).c_str(), ""));
+      WithCommon(scatterer_transport_lines, defines(0, false)).c_str(), ""));
   }
-  std::unique_ptr<vtkOpenGLQuadHelper>& lineTexels = this->LineTexels[2 * entering + arriving];
+  std::unique_ptr<vtkOpenGLQuadHelper>& lineTexels =
+    this->LineTexels[4 * (oneSample ? 1 : 0) + 2 * entering + (arriving ? 1 : 0)];
   if (!lineTexels)
   {
-    const std::string texelDefines =
-      defines(entering) + "#define ST_LINE_TEXELS_ARRIVING " + (arriving ? "1\n" : "0\n");
+    const std::string texelDefines = defines(entering, oneSample) +
+      "#define ST_LINE_TEXELS_ARRIVING " + (arriving ? "1\n" : "0\n");
     lineTexels.reset(new vtkOpenGLQuadHelper(window, scatterer_transport_layers_vs,
       WithCommon(scatterer_transport_line_texels, texelDefines).c_str(),
       scatterer_transport_layers_gs));

@@ -48,10 +48,11 @@ struct TransportPrograms
   std::unique_ptr<vtkOpenGLQuadHelper> Diffuse; ///< pass 3b: one Jacobi iteration
   std::string CreatedVariant;                   ///< the defines they were compiled with
 
-  /// The kinds of sweep program (ST_SWEEP_POSITIONAL, ST_SWEEP_ENTERING in
-  /// scatterer_transport_sweep.glsl): directional or positional light, times no depth in
-  /// front, a directional map of it or a positional one.
-  static constexpr int kSweepKinds = 6;
+  /// The kinds of sweep program (ST_SWEEP_POSITIONAL, ST_SWEEP_ENTERING,
+  /// ST_SWEEP_ONE_SAMPLE in scatterer_transport_sweep.glsl): a positional light, or a
+  /// directional one with one extinction sample a step or more, times no depth in front,
+  /// a directional map of it or a positional one.
+  static constexpr int kSweepKinds = 9;
 
   TransportPrograms();
   ~TransportPrograms();
@@ -67,24 +68,26 @@ struct TransportPrograms
 
   /**
    * Pass 1's program for a light that is @p positional, with the depth in front of a
-   * piece @p entering (0 none, 1 a directional map, 2 a positional one), compiled the
-   * first time one is asked for; null with @p why set if the OpenGL implementation
+   * piece @p entering (0 none, 1 a directional map, 2 a positional one), for steps of
+   * @p oneSample extinction sample (a directional light's; ExtinctionSampling), compiled
+   * the first time one is asked for; null with @p why set if the OpenGL implementation
    * refuses it.
    */
   vtkOpenGLQuadHelper* Sweep(
-    vtkOpenGLRenderWindow* window, bool positional, int entering, std::string& why);
+    vtkOpenGLRenderWindow* window, bool positional, int entering, bool oneSample, std::string& why);
 
   /**
    * A directional light's pass 1 in a few draws instead of one per slice: its lines
    * swept in parallel (scatterer_transport_lines.glsl, image load/store) and the
    * light entering each texel after them (scatterer_transport_line_texels.glsl), with the depth
    * in front of a piece @p entering (0 none, 1 a directional map), into the
-   * transmittance texture or, @p arriving, into the arriving light. Compiled the first
+   * transmittance texture or, @p arriving, into the arriving light, for steps of
+   * @p oneSample extinction sample (ExtinctionSampling). Compiled the first
    * time they are asked for; false when the OpenGL implementation has no image
    * load/store (OpenGL < 4.2 without ARB_shader_image_load_store, as on macOS) or
    * refuses them: the slice sweep (Sweep) serves then, with the same result.
    */
-  bool SweepLines(vtkOpenGLRenderWindow* window, int entering, bool arriving,
+  bool SweepLines(vtkOpenGLRenderWindow* window, int entering, bool arriving, bool oneSample,
     vtkOpenGLQuadHelper*& lines, vtkOpenGLQuadHelper*& texels);
 
   /** Compiles the programs for @p variant in @p window (releasing any others); false
@@ -97,7 +100,8 @@ private:
   std::array<std::unique_ptr<vtkOpenGLQuadHelper>*, 10> All();
   std::unique_ptr<vtkOpenGLQuadHelper> Sweeps[kSweepKinds]; ///< pass 1, per kind, when first used
   std::unique_ptr<vtkOpenGLQuadHelper> Lines;               ///< SweepLines' first draw
-  std::unique_ptr<vtkOpenGLQuadHelper> LineTexels[4];       ///< its second, per entering x arriving
+  /// its second, per one sample x entering x arriving
+  std::unique_ptr<vtkOpenGLQuadHelper> LineTexels[8];
   bool LinesRefused = false; ///< no image load/store here: the slice sweep serves
 };
 

@@ -66,16 +66,30 @@ bool AllocateExtinction(
   return true;
 }
 
-// A new R16F texture (linear) whose border reads 1: outside the grid the light has
+// A new texture (linear) of light whose border reads 1: outside the grid the light has
 // crossed no matter.
-vtkSmartPointer<vtkTextureObject> NewTransmittance(vtkOpenGLRenderWindow* window)
+vtkSmartPointer<vtkTextureObject> NewLightTexture(
+  vtkOpenGLRenderWindow* window, unsigned int internalFormat, unsigned int format)
 {
   float border[4] = { 1, 1, 1, 1 };
   auto texture = NewTransportTexture(window, true, vtkTextureObject::ClampToBorder);
   texture->SetBorderColor(border);
-  texture->SetInternalFormat(GL_R16F);
-  texture->SetFormat(GL_RED);
+  texture->SetInternalFormat(internalFormat);
+  texture->SetFormat(format);
   return texture;
+}
+
+// R16F: the light entering each texel (the transmittance).
+vtkSmartPointer<vtkTextureObject> NewTransmittance(vtkOpenGLRenderWindow* window)
+{
+  return NewLightTexture(window, GL_R16F, GL_RED);
+}
+
+// RG16F: what a directional light's sweep keeps at its lines' points, T and the factor of
+// the far half of the step that reaches the point (st_farFactor).
+vtkSmartPointer<vtkTextureObject> NewCarriedLight(vtkOpenGLRenderWindow* window)
+{
+  return NewLightTexture(window, GL_RG16F, GL_RG);
 }
 }
 
@@ -193,8 +207,8 @@ bool TransportTextures::AllocateSweep(
   {
     for (auto& slice : this->Slices)
     {
-      slice = NewTransmittance(window);
-      if (!slice->Allocate2D(w, h, 1, VTK_FLOAT))
+      slice = NewCarriedLight(window);
+      if (!slice->Allocate2D(w, h, 2, VTK_FLOAT))
       {
         slice = nullptr;
         why = "the slice textures could not be allocated";
@@ -210,9 +224,7 @@ bool TransportTextures::AllocateLines(
 {
   if (!HasSize(this->Lines, ringDims[0], ringDims[1], ringDims[2]))
   {
-    this->Lines = NewTransmittance(window);
-    this->Lines->SetInternalFormat(GL_RG16F);
-    this->Lines->SetFormat(GL_RG);
+    this->Lines = NewCarriedLight(window);
     if (!this->Lines->Allocate3D(ringDims[0], ringDims[1], ringDims[2], 2, VTK_FLOAT))
     {
       this->Lines = nullptr;
@@ -278,7 +290,7 @@ size_t TransportTextures::GetGPUBytes() const
     (Texels(this->Light) + Texels(this->Arriving) + Texels(this->Fluence[0]) +
       Texels(this->Fluence[1]) + Texels(this->CoarseMedium) + Texels(this->CoarseSource)) +
     r16f *
-    (Texels(this->Transmittance) + Texels(this->Slices[0]) + Texels(this->Slices[1]) +
+    (Texels(this->Transmittance) + 2 * (Texels(this->Slices[0]) + Texels(this->Slices[1])) +
       2 * Texels(this->Lines) + 4 * (Texels(this->LineEnds[0]) + Texels(this->LineEnds[1])) +
       Texels(this->FineExtinction) + Texels(this->CoarseOcclusion)) +
     this->Tiles.GetGPUBytes();

@@ -53,10 +53,13 @@ struct TransportTextures
   /// RGBA16F, fine grid + 1 texel a side: light arriving unscattered (null when unused)
   vtkSmartPointer<vtkTextureObject> Arriving;
   vtkSmartPointer<vtkTextureObject> Transmittance; ///< R16F, sweep order
-  vtkSmartPointer<vtkTextureObject> Slices[2];     ///< R16F, ping-pong of the sweep
+  /// RG16F, ping-pong of the slice sweep: per texel T and (a directional light's)
+  /// st_farFactor at the line's point (scatterer_transport_sweep.glsl)
+  vtkSmartPointer<vtkTextureObject> Slices[2];
   /// RG16F, sweep order: a directional light's lines swept in parallel, per texel T and
-  /// its mean factor (scatterer_transport_lines.glsl), a ring of the slices their mean
-  /// has yet to read and the slice before them (st_lineSlot); its border reads 1
+  /// st_farFactor at the line's point (scatterer_transport_lines.glsl), a ring of the
+  /// slices their texels' draw has yet to read and the slice before them (st_lineSlot);
+  /// its border reads 1
   vtkSmartPointer<vtkTextureObject> Lines;
   /// RG32F, 2D, per line: T where a draw of the lines leaves it, and that step (ping-pong)
   vtkSmartPointer<vtkTextureObject> LineEnds[2];

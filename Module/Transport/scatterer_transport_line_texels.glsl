@@ -3,8 +3,9 @@
 //============================================================================
 // Light transport volume, pass 1 for a directional light, second draw (every few draws
 // of the lines, the layers of their slices): the light entering each texel, from what
-// its line carried (scatterer_transport_lines.glsl): the light of the slice before, read
-// at q + e(z_q) where that slice holds T(q), times the texel's entering factor; as
+// the lines carried (scatterer_transport_lines.glsl): T(q) st_farFactor(q), the light of
+// the slice before and the factor of the step's far half from there to the texel's
+// face, both interpolated at q + e(z_q), where that slice holds them for q; as
 // scatterer_transport_sweep.glsl computes it slice by slice.
 //
 // The value of a texel depends on nothing but the lines, so the draw may take the
@@ -18,8 +19,8 @@
 //VTK::Transport::Common
 //VTK::Transport::Sweep
 in vec2 texCoord;
-// Per texel (T, entering factor), sweep order, a ring of slices (st_lineSlot); its border
-// reads 1.
+// Per texel (T, st_farFactor) at the line's point, sweep order, a ring of slices
+// (st_lineSlot); its border reads 1 (outside the grid no matter).
 uniform sampler3D st_lines;
 flat in float st_layer;          // this layer (scatterer_transport_layers_gs.glsl)
 uniform vec3 st_lightColor;      // ST_LINE_TEXELS_ARRIVING: E_l
@@ -36,8 +37,8 @@ float st_lineTexel(vec3 js)
   vec2 eq = st_sliceShift(qs.z, st_stepSweep.xy * st_stepSweep.z);
   vec3 ring = vec3(st_sweepDims.xy, float(st_lineSlots));
   vec3 q = vec3(qs.xy + eq, float(st_lineSlot(qs.z)));
-  float Tq = texture(st_lines, (q + vec3(0.5)) / ring).r;
-  return Tq * texelFetch(st_lines, ivec3(ivec2(js.xy), st_lineSlot(js.z)), 0).g;
+  vec2 keptAtQ = texture(st_lines, (q + vec3(0.5)) / ring).rg;
+  return st_lightEnteringTexel(keptAtQ, transpose(st_toSweep) * js);
 }
 
 void main()

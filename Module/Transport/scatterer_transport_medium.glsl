@@ -25,7 +25,7 @@
 //   it is a dense interior texel (st_isInterior).
 // - output 2 (FineExtinction): the extinction along light paths (st_attenuationAt),
 //   the mean over st_meanPoints^3 points spread evenly over the texel: the sweeps take
-//   the far half of each step toward the light from it (st_stepDepth,
+//   the far half of each step toward the light from it (st_farExtinction,
 //   scatterer_transport_sweep_common.glsl). With st_meanPoints 0 (a texel of one voxel)
 //   the sweeps take no mean: none is computed, and output 2 has no target.
 //============================================================================

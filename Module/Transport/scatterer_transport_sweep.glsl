@@ -24,16 +24,20 @@
 // volume agree), i.e. a texel c of slice z carries T(c - e(z)), read from the texel
 //   c + round(z_q a) - round(z a)            (a whole texel: no interpolation)
 // of the slice before (z_q), which holds T(. - e(z_q)). What the texture stores is
-// interpolated once, from the slice before at q + e(z_q), where it holds T(q). Left:
-// Beer-Lambert over each step is sampled along the texel's own segment, not the
-// shifted line's, so an occluder's imprint keeps its slice's e (at most half a texel).
-// Positional lights keep the bilinear read: their lines diverge, no shift serves a
-// whole slice.
+// interpolated once, from the slice before at q + e(z_q), where it holds T(q).
+// Beer-Lambert over each step is sampled along the line's own path, through its point
+// c - e(z) in each slice: the near half from there, the far half's factor where the line
+// crossed the slice before (st_farFactor, kept there beside T). Sampled along the texel's
+// segment through c instead (until 2026-12-06), an occluder's imprint kept its slice's e
+// (at most half a texel), and an oblique light drew stripes along the sweep on a smooth
+// surface (scatterer_transport_lines.glsl). Positional lights keep the bilinear read:
+// their lines diverge, no shift serves a whole slice.
 //
 // The slices carry T(p); the transmittance texture holds the light entering the texel,
 // at its face toward the light:
 //   T_in = T(q) exp(-tau_far)
-// tau_far the optical depth from q to that face (st_stepFactors). In a thin texel that
+// tau_far the optical depth from q to that face (st_farFactor; a directional light's
+// T(q) and factor both interpolated at q from the lines' points). In a thin texel that
 // is T(p) to O(tau_half) (skin, opacity 0.1 per mm: about 10 % per texel). In a dense one
 // (bone, opacity 0.8 per mm, is several mean free paths deep in one texel) T(p) =
 // T_in exp(-tau_half) depends on where a surface cuts the texel, and it drew the grid
@@ -67,45 +71,52 @@ uniform float st_slice;            // this slice's index along the sweep axis
 uniform vec3 st_lightPosition;     // positional: world position
 
 // The program comes in one variant per kind of light (ScattererTransportPrograms.cxx):
-// ST_SWEEP_POSITIONAL (0: directional, 1: positional) and ST_SWEEP_ENTERING
-// (scatterer_transport_sweep_common.glsl).
+// ST_SWEEP_POSITIONAL (0: directional, 1: positional), ST_SWEEP_ENTERING and
+// ST_SWEEP_ONE_SAMPLE (scatterer_transport_sweep_common.glsl).
 void main()
 {
   vec3 js = vec3(floor(texCoord * st_sweepDims.xy), st_slice);
   vec3 j = transpose(st_toSweep) * js;
-  float T = 1.0;         // at the texel's centre p: carried to the next slice
+  float T = 1.0;         // at the line's point: carried to the next slice
   float Tentering = 1.0; // entering the texel: what the texture holds
+#if ST_SWEEP_POSITIONAL
   if (st_hasPrevious != 0)
   {
-#if ST_SWEEP_POSITIONAL
-    vec4 p = st_texToWorld * vec4(st_gridToTexture(j), 1.0);
+    vec4 world = st_texToWorld * vec4(st_gridToTexture(j), 1.0);
     vec3 stepSweep, stepGrid;
     float len;
-    st_stepTowardLight(st_lightPosition - p.xyz / p.w, stepSweep, stepGrid, len);
-#else
-    vec3 stepSweep = st_stepSweep, stepGrid = st_stepGrid;
-    float len = st_stepLength;
-#endif
-    vec3 qs = js + stepSweep;
+    st_stepTowardLight(st_lightPosition - world.xyz / world.w, stepSweep, stepGrid, len);
     // Outside the grid the light has crossed no matter: the border reads 1.
-#if ST_SWEEP_POSITIONAL
-    float Tq = texture(st_previous, (qs.xy + vec2(0.5)) / st_sweepDims.xy).r;
-    float Tcarried = Tq;
-#else
-    // The shifts e(z) of this slice and of the one before (see the top).
-    vec2 a = stepSweep.xy * stepSweep.z;
-    vec2 ej = st_sliceShift(js.z, a);
-    vec2 eq = st_sliceShift(qs.z, a);
-    float Tcarried =
-      texture(st_previous, (floor(qs.xy + eq - ej + 0.5) + vec2(0.5)) / st_sweepDims.xy).r;
-    float Tq = texture(st_previous, (qs.xy + eq + vec2(0.5)) / st_sweepDims.xy).r;
-#endif
-    float tau, tauHalf;
-    st_stepDepth(j, stepGrid, len, tau, tauHalf);
-    float enteringFactor;
-    T = Tcarried * st_stepFactors(tau, tauHalf, enteringFactor);
-    Tentering = Tq * enteringFactor;
+    float Tq = texture(st_previous, (js.xy + stepSweep.xy + vec2(0.5)) / st_sweepDims.xy).r;
+    Tentering = Tq * st_farFactor(j + stepGrid, stepGrid, len);
+    T = Tentering * exp(-st_nearHalfDepth(j, stepGrid, len));
   }
-  gl_FragData[0] = vec4(T);
+  gl_FragData[0] = vec4(T, 1.0, 0.0, 0.0);
+#else
+  // The shifts e(z) of this slice and of the one before, and the line's point in this
+  // slice, c - e(z) (see the top).
+  vec2 a = st_stepSweep.xy * st_stepSweep.z;
+  vec2 ej = st_sliceShift(js.z, a);
+  vec3 p = transpose(st_toSweep) * (js - vec3(ej, 0.0));
+  if (st_hasPrevious != 0)
+  {
+    vec3 qs = js + st_stepSweep;
+    vec2 eq = st_sliceShift(qs.z, a);
+    // The line's T at its texel in the slice before (a whole texel; outside the grid the
+    // border reads 1: no matter), times its step: the far half's factor at its point
+    // there, p + stepGrid, taken again rather than read back in half precision (as the
+    // lines keep it: scatterer_transport_lines.glsl), and the near half.
+    vec2 before = floor(qs.xy + eq - ej + 0.5);
+    float far = all(greaterThanEqual(before, vec2(0.0))) && all(lessThan(before, st_sweepDims.xy))
+      ? st_farFactor(p + st_stepGrid, st_stepGrid, st_stepLength)
+      : 1.0;
+    T = texture(st_previous, (before + vec2(0.5)) / st_sweepDims.xy).r * far *
+      exp(-st_nearHalfDepth(p, st_stepGrid, st_stepLength));
+    // At q, (T, st_farFactor) between the lines' points.
+    Tentering =
+      st_lightEnteringTexel(texture(st_previous, (qs.xy + eq + vec2(0.5)) / st_sweepDims.xy).rg, j);
+  }
+  gl_FragData[0] = vec4(T, st_farFactor(p, st_stepGrid, st_stepLength), 0.0, 0.0);
+#endif
   gl_FragData[1] = vec4(st_storedTransmittance(Tentering, j));
 }

@@ -43,10 +43,11 @@ void st_stepTowardLight(vec3 toward, out vec3 stepSweep, out vec3 stepGrid, out 
 }
 
 // A directional light's lines (scatterer_transport_lines.glsl) keep only the slices
-// their mean (scatterer_transport_line_texels.glsl) has yet to read: st_lineSlots of them,
-// a ring, slice z in layer z mod st_lineSlots. The mean follows every few draws of the
-// lines (kTexelSlices, ScattererTransportLightPasses.cxx), so the ring holds their slices
-// and the slice before them, not the whole sweep (4 bytes a transport voxel).
+// their texels' draw (scatterer_transport_line_texels.glsl) has yet to read: st_lineSlots
+// of them, a ring, slice z in layer z mod st_lineSlots. The texels' draw follows every
+// few draws of the lines (kTexelSlices, ScattererTransportLightPasses.cxx), so the ring
+// holds their slices and the slice before them, not the whole sweep (2 bytes a transport
+// voxel).
 uniform int st_lineSlots;
 int st_lineSlot(float z)
 {
@@ -61,59 +62,84 @@ vec2 st_sliceShift(float z, vec2 a)
   return floor(za + 0.5) - za;
 }
 
-// The optical depth of the step from texel j (grid) toward the light: tau over the whole
-// step, tauHalf over its near half, inside the texel (from j to the texel's face toward
-// the light). With S = st_stepSamples points f_i = (i + 1/2) / S along the step
-// (ExtinctionSampling: one a volume voxel),
-//   tauHalf = len / S * sum_{f_i <= 1/2} w_i sigma(j + f_i stepGrid)   (w_i = 1/2 on the face, else 1)
-//   tau     = tauHalf + len / 2 * sigmaBar(j + stepGrid)
-// (S = 1: below).
-// sigma the extinction along light paths in the volume (st_attenuationAt), sigmaBar its
-// mean over a texel (pass 0a, st_fineExtinction, read trilinearly between texels; 0
-// outside the grid). The near half keeps the volume's resolution: it decides how much of
-// the light entering the texel passes its centre on. The far half, what the light
-// crosses before it enters the texel (st_stepFactors), is in the texel before; there
-// that texel stands for all of its matter rather than for points of one line through
-// it, at one read of a one-channel texture instead of a volume read and a table read a
-// point. Against the Monte Carlo reference the
-// defaults of all three benchmark scenes moved closer, and a light kit's sweeps took
-// about 5 % less time (docs/model.md, the sweep). With S = 1 (a texel of one voxel) no
-// texel mean is held (it would add a read, and it moved the finest setting of the
-// point-lit scene away, 0.0029 to 0.0033); each half takes one sample, at f = 1/4 and
-// 3/4, inside the texel's voxel and the one before. One sample on the face served both
-// halves until 2026-12-06, but there nearest interpolation (vtkVolumeProperty's default)
-// takes either voxel as the rounding of the texture coordinate falls: rings across lit
-// dense faces (TransportVolume.DenseFaceAtScaleOneShowsNoRings).
-void st_stepDepth(vec3 j, vec3 stepGrid, float len, out float tau, out float tauHalf)
+// The optical depth of the step from grid position j toward the light, in two halves:
+// the near half inside the texel (from j to the texel's face toward the light) and the
+// far half (from that face to q = j + stepGrid, in the texel before). With S =
+// st_stepSamples points f_i = (i + 1/2) / S along the step (ExtinctionSampling: one a
+// volume voxel),
+//   tau_near = len / S * sum_{f_i <= 1/2} w_i sigma(j + f_i stepGrid)
+//              (w_i = 1/2 on the face, else 1)
+//   tau_far  = len / 2 * sigmaBar(j + stepGrid)
+// (S = 1: below). sigma the extinction along light paths in the volume
+// (st_attenuationAt), sigmaBar its mean over a texel (pass 0a, st_fineExtinction, read
+// trilinearly between texels; 0 outside the grid). The near half keeps the volume's
+// resolution: it decides how much of the light entering the texel passes its centre on.
+// The far half, what the light crosses before it enters the texel, is in the texel
+// before; there that texel stands for all of its matter rather than for points of one
+// line through it, at one read of a one-channel texture instead of a volume read and a
+// table read a point. Against the Monte Carlo reference the defaults of all three
+// benchmark scenes moved closer, and a light kit's sweeps took about 5 % less time
+// (docs/model.md, the sweep). With S = 1 (a texel of one voxel) no texel mean is held (it
+// would add a read, and it moved the finest setting of the point-lit scene away, 0.0029
+// to 0.0033); each half takes one sample, at f = 1/4 and 3/4, inside the texel's voxel
+// and the one before. One sample on the face served both halves until 2026-12-06, but
+// there nearest interpolation (vtkVolumeProperty's default) takes either voxel as the
+// rounding of the texture coordinate falls: rings across lit dense faces
+// (TransportVolume.DenseFaceAtScaleOneShowsNoRings).
+//
+// A directional light's lines step along their own path (the line's point in each
+// slice, off the texel's centre by the slice's shift: scatterer_transport_sweep.glsl),
+// and keep at each point p, beside T(p), st_farFactor(p): the light at p reaches the
+// face of the texel one step farther from the light times that factor. The light
+// entering a texel is then T(q) st_farFactor(q), both interpolated between the lines at
+// its q, in one read.
+float st_nearHalfDepth(vec3 j, vec3 stepGrid, float len)
 {
   if (st_stepSamples == 1)
   {
-    tauHalf = 0.5 * len * st_attenuationAt(st_gridToTexture(j + stepGrid * 0.25));
-    tau = tauHalf + 0.5 * len * st_attenuationAt(st_gridToTexture(j + stepGrid * 0.75));
-    return;
+    return 0.5 * len * st_attenuationAt(st_gridToTexture(j + stepGrid * 0.25));
   }
-  tauHalf = 0.0;
+  float tau = 0.0;
   for (int i = 0; 2 * i + 1 <= st_stepSamples; ++i)
   {
     float f = (float(i) + 0.5) / float(st_stepSamples);
     float a = st_attenuationAt(st_gridToTexture(j + stepGrid * f));
-    tauHalf += f < 0.5 ? a : 0.5 * a; // a sample on the face (odd S): half
+    tau += f < 0.5 ? a : 0.5 * a; // a sample on the face (odd S): half
   }
-  tauHalf *= len / float(st_stepSamples);
-  tau = tauHalf + 0.5 * len * texture(st_fineExtinction, (j + stepGrid + vec3(0.5)) / st_gridDims).r;
+  return tau * len / float(st_stepSamples);
 }
 
-// Over a step of optical depth tau (tauHalf inside the texel): the light's factor,
-// exp(-tau), returned, and the factor of the light entering the texel (at its face
-// toward the light, what the transmittance texture holds: scatterer_transport_sweep.glsl)
-// over the light at q, T_q:
-//   T_in = T_q exp(-(tau - tauHalf))                      (Beer-Lambert)
-// Two exponentials for both, each with an exponent <= 0 (tauHalf <= tau).
-float st_stepFactors(float tau, float tauHalf, out float enteringFactor)
+// The far half of the step that reaches grid position q (from j = q - stepGrid): its
+// extinction, tau_far = len / 2 * st_farExtinction(q), and its factor, exp(-tau_far).
+float st_farExtinction(vec3 q, vec3 stepGrid)
 {
-  float inside = exp(-tauHalf), beyond = exp(tauHalf - tau);
-  enteringFactor = beyond;
-  return inside * beyond;
+  if (st_stepSamples == 1)
+  {
+    return st_attenuationAt(st_gridToTexture(q - stepGrid * 0.25));
+  }
+  return texture(st_fineExtinction, (q + vec3(0.5)) / st_gridDims).r;
+}
+
+float st_farFactor(vec3 q, vec3 stepGrid, float len)
+{
+  return exp(-0.5 * len * st_farExtinction(q, stepGrid));
+}
+
+// A directional light's light entering the texel at grid position j, T(q) exp(-tau_far),
+// from what its lines keep at q: (T, st_farFactor) interpolated between the lines'
+// points. With one extinction sample a step (ST_SWEEP_ONE_SAMPLE: TransportScale 1) the
+// far half is one point of the volume as its interpolation gives it (nearest by default:
+// a voxel's value up to its face), and interpolated between lines that factor spreads a
+// voxel's face over a texel: a seam of light along the side of a dense plate
+// (`dense-ball` at the finest setting). There it is taken along the texel's own segment
+// (a volume read more a texel).
+float st_lightEnteringTexel(vec2 keptAtQ, vec3 j)
+{
+#if ST_SWEEP_ONE_SAMPLE
+  return keptAtQ.r * st_farFactor(j + st_stepGrid, st_stepGrid, st_stepLength);
+#else
+  return keptAtQ.r * keptAtQ.g;
+#endif
 }
 
 // The program comes in one variant per kind of light (ScattererTransportPrograms.cxx):
