@@ -8,6 +8,14 @@
 uniform vec3 st_coarseDims;
 uniform int st_atlasColumns;
 
+// Whether a coarse texel of this medium (pass 0b: rgb albedo, a sigma_t) holds one: where
+// none, nothing scatters, the diffusion writes no light and its light escapes through the
+// faces toward it (scatterer_transport_diffuse.glsl).
+bool st_holdsMedium(vec4 coarseMedium)
+{
+  return coarseMedium.a > 1.0e-6;
+}
+
 // The atlas's texel of coarse texel c (inside the grid).
 ivec2 st_atlasTexel(ivec3 c)
 {

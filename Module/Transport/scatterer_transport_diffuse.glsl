@@ -51,7 +51,7 @@ void main()
 {
   ivec3 c = ivec3(ivec2(floor(texCoord * st_coarseDims.xy)), int(st_layer));
   vec4 medium = texelFetch(st_coarseMedium, c, 0);
-  if (medium.a <= 1.0e-6)
+  if (!st_holdsMedium(medium))
   {
     gl_FragData[0] = vec4(0.0);
     return;

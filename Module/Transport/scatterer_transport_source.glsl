@@ -19,10 +19,10 @@
 //============================================================================
 //VTK::Transport::Common
 //VTK::Transport::Arriving
+//VTK::Transport::Atlas
 in vec2 texCoord;
 uniform sampler3D st_fineScattering; // pass 0a: rgb = sigma_s (1 - exp(-2x)) / (2x)
 flat in float st_layer;            // this layer (scatterer_transport_tiles_vs.glsl)
-uniform vec3 st_coarseDims;
 uniform vec3 st_coarseToGrid;      // coarse texel c covers fine positions c * st_block + st_coarseToGrid + [0, st_block)
 uniform int st_block;
 uniform sampler3D st_coarseMedium; // pass 0b: rgb albedo, a sigma_t
@@ -32,7 +32,7 @@ uniform vec3 st_h;                 // coarse texel size along each axis, world u
 bool st_empty(ivec3 c)
 {
   return any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, ivec3(st_coarseDims))) ||
-    texelFetch(st_coarseMedium, c, 0).a <= 1.0e-6;
+    !st_holdsMedium(texelFetch(st_coarseMedium, c, 0));
 }
 
 // The escape of coarse texel c: sum over its faces toward no medium of
