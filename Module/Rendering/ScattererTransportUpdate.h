@@ -108,6 +108,9 @@ public:
   /** For tests: false diffuses on every coarse texel (Inputs::DiffuseOnTiles). */
   void SetDiffuseOnTiles(bool onTiles) { this->Inputs.DiffuseOnTiles = onTiles; }
 
+  /** For tests: false sweeps every light on the fine grid (Inputs::CoarseDimLights). */
+  void SetCoarseDimLights(bool coarse) { this->Inputs.CoarseDimLights = coarse; }
+
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:

@@ -317,6 +317,12 @@ void vtkScattererTemplateVolumeMapper::SetDiffuseOnTilesForTesting(bool onTiles)
   this->Modified();
 }
 
+void vtkScattererTemplateVolumeMapper::SetCoarseDimLightsForTesting(bool coarse)
+{
+  this->Internals->Transport.SetCoarseDimLights(coarse);
+  this->Modified();
+}
+
 void vtkScattererTemplateVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Internals->Transport.ReleaseGraphicsResources(window);

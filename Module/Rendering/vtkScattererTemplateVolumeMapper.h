@@ -458,6 +458,13 @@ public:
    */
   void SetDiffuseOnTilesForTesting(bool onTiles);
 
+  /**
+   * For tests: false sweeps every light on the transport volume's own grid, the dim ones
+   * too (by default a light dimmer than half the brightest is swept on a grid twice as
+   * coarse: a light kit's fill, head and back lights).
+   */
+  void SetCoarseDimLightsForTesting(bool coarse);
+
 protected:
   vtkScattererTemplateVolumeMapper();
   ~vtkScattererTemplateVolumeMapper() override;

@@ -91,6 +91,7 @@ std::uint64_t TransportKey(const vtkScattererTransportVolume::Inputs& in)
   f.Add(MediumKey(in));
   f.Add(in.MultipleScattering);
   f.Add(in.DiffusionIterations);
+  f.Add(in.CoarseDimLights);
   for (const auto& l : in.Lights)
   {
     f.Add(l.Toward, 3);

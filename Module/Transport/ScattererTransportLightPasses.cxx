@@ -25,6 +25,32 @@ namespace scatterer_gpu
 {
 namespace
 {
+// Where the sweeps read the texels' mean extinction (st_gridToMeansScale, ..._Offset,
+// st_farMeanShift: scatterer_transport_sweep_common.glsl). On the dim lights' grid the
+// means are the fine grid's: texel j of the grid lies at global index (F + j) d, which is
+// fine texel (F + j) d / f - F_f (d, f voxels per texel, F their first indices).
+void SetMeansUniforms(vtkShaderProgram* program, const TransportPass& pass)
+{
+  const TransportGrid& grid = pass.Grid;
+  const TransportGrid& means = pass.MeansGrid ? *pass.MeansGrid : grid;
+  const double ratio = pass.MeansGrid
+    ? static_cast<double>(pass.SweepDownsample()) / std::max(1, pass.In.Downsample)
+    : 1.0;
+  float scale[3], offset[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    const double n = means.Dims[a];
+    const bool flat = means.Dims[a] < 2; // one texel: its centre
+    scale[a] = flat ? 0.0f : static_cast<float>(ratio / n);
+    offset[a] = flat
+      ? 0.5f
+      : static_cast<float>((grid.FirstIndex[a] * ratio - means.FirstIndex[a] + 0.5) / n);
+  }
+  program->SetUniform3f("st_gridToMeansScale", scale);
+  program->SetUniform3f("st_gridToMeansOffset", offset);
+  program->SetUniformf("st_farMeanShift", pass.MeansGrid ? 0.25f : 0.0f);
+}
+
 // The uniforms and samplers every sweep program reads
 // (scatterer_transport_sweep_common.glsl), for the bound program's lifetime.
 class SweepBindings
@@ -36,7 +62,8 @@ public:
     : Volume(program, pass.In)
     , Medium(program, "st_medium", pass.Tables.Medium)
     , Extinction(program, "st_extinction", pass.Tables.Extinction)
-    , FineExtinction(program, "st_fineExtinction", pass.Textures.FineExtinction)
+    , FineExtinction(program, "st_fineExtinction",
+        pass.MeansTexture ? pass.MeansTexture : pass.Textures.FineExtinction.Get())
     , DepthInFront(program, "st_enteringDepth", enteringTexture)
   {
     const vtkScattererTransportVolume::Inputs& in = pass.In;
@@ -60,7 +87,9 @@ public:
       program->SetUniform3f("st_stepGrid", stepGrid);
       program->SetUniformf("st_stepLength", static_cast<float>(step.Length));
     }
-    program->SetUniformi("st_stepSamples", ExtinctionSampling::For(in.Downsample).StepSamples);
+    program->SetUniformi(
+      "st_stepSamples", ExtinctionSampling::For(pass.SweepDownsample()).StepSamples);
+    SetMeansUniforms(program, pass);
     program->SetUniformf("st_sliceOrigin", static_cast<float>(pass.Grid.FirstIndex[plan.Axis]));
     program->SetUniformf("st_firstSlice", static_cast<float>(plan.Runs.front().first));
     SetIndexUniforms(program, in);
@@ -298,7 +327,7 @@ bool SweepTransmittance(const TransportPass& pass, const vtkScattererTransportVo
   vtkOpenGLQuadHelper* lines = nullptr;
   vtkOpenGLQuadHelper* texels = nullptr;
   const bool arriving = output != SweepOutput::Transmittance;
-  const bool oneSample = ExtinctionSampling::For(pass.In.Downsample).StepSamples == 1;
+  const bool oneSample = ExtinctionSampling::For(pass.SweepDownsample()).StepSamples == 1;
   if (!light.Positional && pass.SweepLinesInParallel &&
     pass.Programs.SweepLines(pass.Window, enteringKind, arriving, oneSample, lines, texels))
   {
@@ -359,6 +388,58 @@ bool SweepTransmittance(const TransportPass& pass, const vtkScattererTransportVo
   return true;
 }
 
+std::vector<bool> DimLightsOf(const vtkScattererTransportVolume::Inputs& in)
+{
+  std::vector<bool> dim(in.Lights.size(), false);
+  if (!in.CoarseDimLights || in.Lights.size() < 2 || in.Downsample < 2)
+  {
+    return dim;
+  }
+  const auto irradiance = [](const vtkScattererTransportVolume::Light& light) {
+    return std::max({ light.Color[0], light.Color[1], light.Color[2] });
+  };
+  float brightest = 0.0f;
+  for (const auto& light : in.Lights)
+  {
+    brightest = std::max(brightest, irradiance(light));
+  }
+  for (size_t l = 0; l < in.Lights.size(); ++l)
+  {
+    dim[l] = irradiance(in.Lights[l]) < kDimLightFraction * brightest;
+  }
+  return dim;
+}
+
+bool AddDimLights(const TransportPass& pass, const TransportPass& dim, std::string& why)
+{
+  vtkOpenGLQuadHelper* quad = pass.Programs.DimLights(pass.Window, why);
+  if (!quad)
+  {
+    return false;
+  }
+  vtkShaderProgram* program = UseProgram(pass.Window, quad);
+  // Fine texel j lies at global index (F + j) f, dim grid position (F + j) f / d - F_d
+  // (f, d voxels per texel, F, F_d the grids' first indices).
+  const double ratio = static_cast<double>(pass.SweepDownsample()) / dim.SweepDownsample();
+  float gridDims[3], dimDims[3], scale[3], offset[3];
+  pass.Grid.GetDims(gridDims);
+  dim.Grid.GetDims(dimDims);
+  for (int a = 0; a < 3; ++a)
+  {
+    const bool flat = dim.Grid.Dims[a] < 2;
+    scale[a] = flat ? 0.0f : static_cast<float>(ratio);
+    offset[a] =
+      flat ? 0.0f : static_cast<float>(pass.Grid.FirstIndex[a] * ratio - dim.Grid.FirstIndex[a]);
+  }
+  program->SetUniform3f("st_gridDims", gridDims);
+  program->SetUniform3f("st_dimDims", dimDims);
+  program->SetUniform3f("st_gridToDimScale", scale);
+  program->SetUniform3f("st_gridToDimOffset", offset);
+  ScopedSampler arriving(program, "st_dimArriving", dim.Textures.Arriving);
+  DrawIntoArriving(pass, quad, program, false);
+  return true;
+}
+
 int DirectLight(const vtkScattererTransportVolume::Inputs& in)
 {
   return in.Lights.size() == 1 && !in.Lights.front().Positional ? 0 : -1;
@@ -386,11 +467,16 @@ ScopedArrivingLight::ScopedArrivingLight(
   }
 }
 
-void AddArrivingLight(const TransportPass& pass, const vtkScattererTransportVolume::Light& light,
-  const SweepPlan& plan, bool first)
+bool AddArrivingLight(const TransportPass& pass, const vtkScattererTransportVolume::Light& light,
+  const SweepPlan& plan, bool first, std::string& why)
 {
   const vtkScattererTransportVolume::Inputs& in = pass.In;
-  vtkShaderProgram* program = UseProgram(pass.Window, pass.Programs.Arrive.get());
+  vtkOpenGLQuadHelper* quad = pass.Programs.Arrive(pass.Window, why);
+  if (!quad)
+  {
+    return false;
+  }
+  vtkShaderProgram* program = UseProgram(pass.Window, quad);
   SetCommonUniforms(program, pass.Grid, in);
   SetSweepOrder(program, plan);
   program->SetUniform3f("st_lightColor", light.Color);
@@ -403,10 +489,12 @@ void AddArrivingLight(const TransportPass& pass, const vtkScattererTransportVolu
   ScopedSampler transmittance(program, "st_transmittance", pass.Textures.Transmittance);
 
   // The texture has one texel more than the grid on each side (arrive.glsl).
-  DrawIntoArriving(pass, pass.Programs.Arrive.get(), program, first);
+  DrawIntoArriving(pass, quad, program, first);
+  return true;
 }
 
-void GatherLight(const TransportPass& pass, const SweepPlan& plan, vtkTextureObject* fluence)
+bool GatherLight(
+  const TransportPass& pass, const SweepPlan& plan, vtkTextureObject* fluence, std::string& why)
 {
   const vtkScattererTransportVolume::Inputs& in = pass.In;
   const std::vector<int>& layerGathers = pass.Textures.LayerGathers;
@@ -422,7 +510,11 @@ void GatherLight(const TransportPass& pass, const SweepPlan& plan, vtkTextureObj
     }
     const auto drawn = [&](int z)
     { return z < static_cast<int>(layerGathers.size()) && layerGathers[z] == variant; };
-    vtkOpenGLQuadHelper* quad = pass.Programs.Gather[variant].get();
+    vtkOpenGLQuadHelper* quad = pass.Programs.Gather(pass.Window, variant, why);
+    if (!quad)
+    {
+      return false;
+    }
     vtkShaderProgram* program = UseProgram(pass.Window, quad);
     SetCommonUniforms(program, pass.Grid, in);
     SetMaterialUniforms(program, in);
@@ -437,5 +529,6 @@ void GatherLight(const TransportPass& pass, const SweepPlan& plan, vtkTextureObj
     DrawLayersWhere(
       pass.Framebuffer, quad, program, { pass.Textures.Light }, pass.Grid.Dims[2], drawn);
   }
+  return true;
 }
 }

@@ -16,6 +16,7 @@
 #include "vtk_glew.h"
 
 #include "scatterer_transport_arrive.h"
+#include "scatterer_transport_dim_lights.h"
 #include "scatterer_transport_arriving.h"
 #include "scatterer_transport_atlas.h"
 #include "scatterer_transport_coarsen.h"
@@ -73,6 +74,32 @@ std::string WithCommon(const char* pass, const std::string& variant)
   }
   return text;
 }
+
+// A full-screen quad whose draws go to every layer of a 3D target
+// (scatterer_transport_layers_vs.glsl, ..._gs.glsl), with fragment shader @p fs.
+vtkOpenGLQuadHelper* NewLayeredQuad(vtkOpenGLRenderWindow* window, const std::string& fs)
+{
+  return new vtkOpenGLQuadHelper(
+    window, scatterer_transport_layers_vs, fs.c_str(), scatterer_transport_layers_gs);
+}
+
+// @p quad, made by @p make the first time; null with @p why set if it does not compile.
+template <typename Make>
+vtkOpenGLQuadHelper* CompiledWhenFirstUsed(
+  std::unique_ptr<vtkOpenGLQuadHelper>& quad, Make make, std::string& why)
+{
+  if (!quad)
+  {
+    quad.reset(make());
+  }
+  if (!quad->Program)
+  {
+    why = kCompileFailed;
+    quad.reset();
+    return nullptr;
+  }
+  return quad.get();
+}
 }
 
 std::string TransportPrograms::Variant(const vtkScattererTransportVolume::Inputs& in)
@@ -102,18 +129,9 @@ bool TransportPrograms::Create(
   this->CreatedVariant = variant;
   // Every pass but the sweep draws whole 3D textures, all their layers in one draw.
   auto quad = [&](const std::string& fs)
-  {
-    return std::unique_ptr<vtkOpenGLQuadHelper>(new vtkOpenGLQuadHelper(
-      window, scatterer_transport_layers_vs, fs.c_str(), scatterer_transport_layers_gs));
-  };
+  { return std::unique_ptr<vtkOpenGLQuadHelper>(NewLayeredQuad(window, fs)); };
   this->Medium = quad(WithCommon(scatterer_transport_medium, variant));
   this->Coarsen = quad(WithCommon(scatterer_transport_coarsen, variant));
-  this->Arrive = quad(WithCommon(scatterer_transport_arrive, variant));
-  for (int g = 0; g < GatherVariants; ++g)
-  {
-    this->Gather[g] = quad(WithCommon(
-      scatterer_transport_gather, variant + "#define ST_GATHER " + std::to_string(g) + "\n"));
-  }
   this->Count = quad(WithCommon(scatterer_transport_count, variant));
   // A 2D target: VTK's full-screen quad.
   const std::string fluenceStart = WithCommon(scatterer_transport_fluence_start, "");
@@ -144,35 +162,60 @@ bool TransportPrograms::Create(
   return true;
 }
 
-std::array<std::unique_ptr<vtkOpenGLQuadHelper>*, 10> TransportPrograms::All()
+std::array<std::unique_ptr<vtkOpenGLQuadHelper>*, 6> TransportPrograms::All()
 {
-  return { &this->Medium, &this->Coarsen, &this->Count, &this->FluenceStart, &this->Arrive,
-    &this->Gather[GatherArriving], &this->Gather[GatherTemplates],
-    &this->Gather[GatherAcrossMaterials], &this->Source, &this->Diffuse };
+  return { &this->Medium, &this->Coarsen, &this->Count, &this->FluenceStart, &this->Source,
+    &this->Diffuse };
+}
+
+vtkOpenGLQuadHelper* TransportPrograms::Arrive(vtkOpenGLRenderWindow* window, std::string& why)
+{
+  return CompiledWhenFirstUsed(
+    this->ArriveQuad,
+    [&] {
+      return NewLayeredQuad(window, WithCommon(scatterer_transport_arrive, this->CreatedVariant));
+    },
+    why);
+}
+
+vtkOpenGLQuadHelper* TransportPrograms::Gather(
+  vtkOpenGLRenderWindow* window, int variant, std::string& why)
+{
+  return CompiledWhenFirstUsed(
+    this->GatherQuads[variant],
+    [&]
+    {
+      return NewLayeredQuad(window,
+        WithCommon(scatterer_transport_gather,
+          this->CreatedVariant + "#define ST_GATHER " + std::to_string(variant) + "\n"));
+    },
+    why);
 }
 
 vtkOpenGLQuadHelper* TransportPrograms::Sweep(
   vtkOpenGLRenderWindow* window, bool positional, int entering, bool oneSample, std::string& why)
 {
   oneSample = oneSample && !positional; // a positional light's sweep has no lines' points
-  std::unique_ptr<vtkOpenGLQuadHelper>& sweep =
-    this->Sweeps[(positional ? 3 : (oneSample ? 6 : 0)) + entering];
-  if (!sweep)
-  {
-    const std::string defines = "#define ST_SWEEP_POSITIONAL " +
-      std::to_string(positional ? 1 : 0) + "\n#define ST_SWEEP_ENTERING " +
-      std::to_string(entering) + "\n#define ST_SWEEP_ONE_SAMPLE " + (oneSample ? "1" : "0") + "\n";
-    sweep.reset(new vtkOpenGLQuadHelper(window,
-      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(),
-      WithCommon(scatterer_transport_sweep, this->CreatedVariant + defines).c_str(), ""));
-  }
-  if (!sweep->Program)
-  {
-    why = kCompileFailed;
-    sweep.reset();
-    return nullptr;
-  }
-  return sweep.get();
+  return CompiledWhenFirstUsed(
+    this->Sweeps[(positional ? 3 : (oneSample ? 6 : 0)) + entering],
+    [&]
+    {
+      const std::string defines = "#define ST_SWEEP_POSITIONAL " +
+        std::to_string(positional ? 1 : 0) + "\n#define ST_SWEEP_ENTERING " +
+        std::to_string(entering) + "\n#define ST_SWEEP_ONE_SAMPLE " + (oneSample ? "1" : "0") +
+        "\n";
+      return new vtkOpenGLQuadHelper(window,
+        vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(),
+        WithCommon(scatterer_transport_sweep, this->CreatedVariant + defines).c_str(), "");
+    },
+    why);
+}
+
+vtkOpenGLQuadHelper* TransportPrograms::DimLights(vtkOpenGLRenderWindow* window, std::string& why)
+{
+  return CompiledWhenFirstUsed(
+    this->DimLightsQuad, [&] { return NewLayeredQuad(window, scatterer_transport_dim_lights); },
+    why);
 }
 
 bool TransportPrograms::SweepLines(vtkOpenGLRenderWindow* window, int entering, bool arriving,
@@ -251,6 +294,12 @@ void TransportPrograms::ReleaseGraphicsResources(vtkWindow* window)
     release(sweep);
   }
   release(this->Lines);
+  release(this->ArriveQuad);
+  for (auto& gather : this->GatherQuads)
+  {
+    release(gather);
+  }
+  release(this->DimLightsQuad);
   for (auto& texels : this->LineTexels)
   {
     release(texels);

@@ -40,10 +40,6 @@ struct TransportPrograms
   std::unique_ptr<vtkOpenGLQuadHelper> Count;   ///< pass 0c: which gather each layer needs
   /// pass 0d: the fluence atlases' start, the occlusion in alpha
   std::unique_ptr<vtkOpenGLQuadHelper> FluenceStart;
-  std::unique_ptr<vtkOpenGLQuadHelper> Arrive; ///< pass 2a: a light's arriving light
-  /// passes 2b and 4, after 3a and 3b: template in-scattering plus the multiply scattered
-  /// and ambient light, the light each texel receives, per GatherVariant
-  std::unique_ptr<vtkOpenGLQuadHelper> Gather[GatherVariants];
   std::unique_ptr<vtkOpenGLQuadHelper> Source;  ///< pass 3a: light scattered once, coarse grid
   std::unique_ptr<vtkOpenGLQuadHelper> Diffuse; ///< pass 3b: one Jacobi iteration
   std::string CreatedVariant;                   ///< the defines they were compiled with
@@ -90,6 +86,25 @@ struct TransportPrograms
   bool SweepLines(vtkOpenGLRenderWindow* window, int entering, bool arriving, bool oneSample,
     vtkOpenGLQuadHelper*& lines, vtkOpenGLQuadHelper*& texels);
 
+  /** Pass 2a, a light's arriving light (scatterer_transport_arrive.glsl), compiled when
+   * first used (a build of one directional light never uses it); null with @p why set if
+   * the OpenGL implementation refuses it. */
+  vtkOpenGLQuadHelper* Arrive(vtkOpenGLRenderWindow* window, std::string& why);
+
+  /** Passes 2b and 4, after 3a and 3b (scatterer_transport_gather.glsl): template
+   * in-scattering plus the multiply scattered and ambient light, the light each texel
+   * receives, in @p variant (a GatherVariant), compiled when a layer first needs it (no
+   * layer of the CT head needs GatherAcrossMaterials); null with @p why set if refused. */
+  vtkOpenGLQuadHelper* Gather(vtkOpenGLRenderWindow* window, int variant, std::string& why);
+
+  /**
+   * The draw that adds the dim lights' arriving light, from their coarser grid, to the
+   * fine grid's (scatterer_transport_dim_lights.glsl), compiled the first time a build
+   * has dim lights (a build under the headlight alone never compiles it); null with
+   * @p why set if the OpenGL implementation refuses it.
+   */
+  vtkOpenGLQuadHelper* DimLights(vtkOpenGLRenderWindow* window, std::string& why);
+
   /** Compiles the programs for @p variant in @p window (releasing any others); false
    * with @p why set (and none kept) if the OpenGL implementation refuses one. */
   bool Create(vtkOpenGLRenderWindow* window, const std::string& variant, std::string& why);
@@ -97,12 +112,17 @@ struct TransportPrograms
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:
-  std::array<std::unique_ptr<vtkOpenGLQuadHelper>*, 10> All();
+  std::array<std::unique_ptr<vtkOpenGLQuadHelper>*, 6> All();
   std::unique_ptr<vtkOpenGLQuadHelper> Sweeps[kSweepKinds]; ///< pass 1, per kind, when first used
   std::unique_ptr<vtkOpenGLQuadHelper> Lines;               ///< SweepLines' first draw
   /// its second, per one sample x entering x arriving
   std::unique_ptr<vtkOpenGLQuadHelper> LineTexels[8];
   bool LinesRefused = false; ///< no image load/store here: the slice sweep serves
+  // Compiled when first used: each compiled program holds llvmpipe's JIT code in host
+  // memory (docs/rendering.md, the memory target).
+  std::unique_ptr<vtkOpenGLQuadHelper> ArriveQuad;
+  std::unique_ptr<vtkOpenGLQuadHelper> GatherQuads[GatherVariants];
+  std::unique_ptr<vtkOpenGLQuadHelper> DimLightsQuad;
 };
 
 /** Makes @p quad's program current in @p window and returns it. */

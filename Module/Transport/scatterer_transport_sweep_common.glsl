@@ -12,6 +12,14 @@ uniform mat3 st_worldToGrid;       // world vector -> grid-index vector
 uniform mat3 st_gridToWorld;       // grid-index vector -> world vector
 uniform int st_stepSamples;        // extinction samples a step (ExtinctionSampling)
 uniform sampler3D st_fineExtinction; // per texel its mean extinction (pass 0a); border 0
+// Grid position -> st_fineExtinction's texture coordinate, j * scale + offset: the
+// texture covers this grid, or (the dim lights' grid, twice as coarse) the fine grid.
+uniform vec3 st_gridToMeansScale;
+uniform vec3 st_gridToMeansOffset;
+// Where a step's far half reads the means, in steps from q back toward the texel the
+// step leaves: 0, at q (a texel's own mean stands for its far half), or 1/4 on the dim
+// lights' grid (the middle of the far half, among the fine texels it crosses).
+uniform float st_farMeanShift;
 uniform mat4 st_texToIndex;        // volume texture coordinates -> structured index
 uniform sampler2D st_enteringDepth;
 uniform vec3 st_enteringLight;     // positional: the light (index space)
@@ -117,7 +125,8 @@ float st_farExtinction(vec3 q, vec3 stepGrid)
   {
     return st_attenuationAt(st_gridToTexture(q - stepGrid * 0.25));
   }
-  return texture(st_fineExtinction, (q + vec3(0.5)) / st_gridDims).r;
+  vec3 m = q - stepGrid * st_farMeanShift;
+  return texture(st_fineExtinction, m * st_gridToMeansScale + st_gridToMeansOffset).r;
 }
 
 float st_farFactor(vec3 q, vec3 stepGrid, float len)

@@ -31,6 +31,7 @@
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <utility>
@@ -43,6 +44,10 @@ struct vtkScattererTransportVolume::vtkInternals
   scatterer_gpu::TransportPrograms Programs;
   scatterer_gpu::TransportTables Tables;
   scatterer_gpu::TransportTextures Textures;
+  // The dim lights' grid, twice as coarse as Grid, and what their sweeps draw into (its
+  // lines and arriving light; the texel means are Textures'): empty without dim lights.
+  scatterer_gpu::TransportGrid DimGrid;
+  scatterer_gpu::TransportTextures DimTextures;
   scatterer_gpu::TransportProgress Progress;
   vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
   vtkOpenGLRenderWindow* Context = nullptr;
@@ -74,13 +79,16 @@ struct vtkScattererTransportVolume::vtkInternals
       this->Textures, this->Progress, this->SweepLinesInParallel };
   }
 
-  /** Sweeps @p light's transmittance into @p output; CurrentPlan is its plan if it
-   * succeeds, and @p summed says whether its light is in the arriving light. */
-  bool Sweep(const Inputs& in, const Light& light, scatterer_gpu::SweepOutput output, bool& summed,
-    std::string& why)
+  /** The passes of the dim lights (DimLightsOf): on DimGrid, into DimTextures, reading
+   * the fine grid's texel means. */
+  scatterer_gpu::TransportPass DimPass(const Inputs& in)
   {
-    return scatterer_gpu::SweepTransmittance(
-      this->Pass(in), light, output, this->CurrentPlan, summed, why);
+    scatterer_gpu::TransportPass pass{ this->Context, this->Framebuffer, this->Programs, in,
+      this->DimGrid, this->Tables, this->DimTextures, this->Progress, this->SweepLinesInParallel };
+    pass.Downsample = scatterer_gpu::kDimLightCoarsening * in.Downsample;
+    pass.MeansGrid = &this->Grid;
+    pass.MeansTexture = this->Textures.FineExtinction;
+    return pass;
   }
 
   /** Runs the passes of a build, timing its stages into LastStages (each waiting for
@@ -140,40 +148,77 @@ bool vtkScattererTransportVolume::vtkInternals::RunPasses(
   {
     this->Textures.ReleaseArriving(this->Context);
   }
-  int swept = 0;
+  // The dim lights go first, on their own grid, then the others on the fine grid, the
+  // direct light last (its plan is the one the passes after read), then the dim lights'
+  // light is added to the fine grid's.
+  const std::vector<bool> dim = scatterer_gpu::DimLightsOf(in);
+  const bool hasDim = std::find(dim.begin(), dim.end(), true) != dim.end();
+  int volumeDims[3];
+  in.GetGridSourceDims(volumeDims);
+  if (ok && hasDim &&
+    (!this->DimGrid.Place(volumeDims, in.IndexOrigin,
+       scatterer_gpu::kDimLightCoarsening * in.Downsample, in.TexToWorld) ||
+      !this->DimTextures.AllocateArriving(this->Context, this->DimGrid.Dims, why)))
+  {
+    why = why.empty() ? "the dim lights' grid is degenerate" : why;
+    ok = false;
+  }
+  if (!hasDim)
+  {
+    this->DimTextures.ReleaseGraphicsResources(this->Context);
+  }
+  const scatterer_gpu::TransportPass dimPass = this->DimPass(in);
+  int swept = 0, sweptDim = 0;
   const auto sweep = [&](int l)
   {
     this->Context->GetState()->vtkglDisable(GL_BLEND);
     using scatterer_gpu::SweepOutput;
+    const bool isDim = dim[static_cast<size_t>(l)];
+    int& before = isDim ? sweptDim : swept; // the lights before it on its grid
+    const scatterer_gpu::TransportPass& on = isDim ? dimPass : pass;
     const SweepOutput output = l == direct ? SweepOutput::Transmittance
-      : swept == 0                         ? SweepOutput::ArrivingFirst
+      : before == 0                        ? SweepOutput::ArrivingFirst
                                            : SweepOutput::ArrivingAdded;
     bool summed = false;
-    ok = this->Sweep(in, in.Lights[static_cast<size_t>(l)], output, summed, why);
+    scatterer_gpu::SweepPlan plan;
+    ok = scatterer_gpu::SweepTransmittance(
+      on, in.Lights[static_cast<size_t>(l)], output, plan, summed, why);
     lap(this->LastStages.Sweeps);
     if (ok)
     {
-      this->Progress.SweepDone(swept);
+      this->Progress.SweepDone(swept + sweptDim);
       if (l != direct && !summed)
       {
-        scatterer_gpu::AddArrivingLight(
-          pass, in.Lights[static_cast<size_t>(l)], this->CurrentPlan, swept == 0);
+        ok = scatterer_gpu::AddArrivingLight(
+          on, in.Lights[static_cast<size_t>(l)], plan, before == 0, why);
         lap(this->LastStages.Arriving);
       }
+      if (!isDim)
+      {
+        this->CurrentPlan = plan;
+      }
       this->Progress.StepDone();
-      ++swept;
+      ++before;
     }
   };
-  for (int l = 0; l < lights && ok; ++l)
+  for (int pick = 0; pick < 2; ++pick) // the dim lights, then the others
   {
-    if (l != direct)
+    for (int l = 0; l < lights && ok; ++l)
     {
-      sweep(l);
+      if (l != direct && dim[static_cast<size_t>(l)] == (pick == 0))
+      {
+        sweep(l);
+      }
     }
   }
   if (ok && direct >= 0)
   {
     sweep(direct);
+  }
+  if (ok && hasDim)
+  {
+    ok = scatterer_gpu::AddDimLights(pass, dimPass, why);
+    lap(this->LastStages.Arriving);
   }
   // The diffusion needs only the arriving light, so it runs first and the gather writes
   // the whole light in one pass.
@@ -183,8 +228,11 @@ bool vtkScattererTransportVolume::vtkInternals::RunPasses(
   {
     lap(this->LastStages.Diffusion);
     this->Fluence = fluence;
-    scatterer_gpu::GatherLight(pass, this->CurrentPlan, fluence);
+    ok = scatterer_gpu::GatherLight(pass, this->CurrentPlan, fluence, why);
     lap(this->LastStages.Gather);
+  }
+  if (ok)
+  {
     this->Progress.BuildDone();
   }
   this->Progress.EndBuild();
@@ -194,6 +242,7 @@ bool vtkScattererTransportVolume::vtkInternals::RunPasses(
 void vtkScattererTransportVolume::vtkInternals::Release(vtkWindow* window)
 {
   this->Textures.ReleaseGraphicsResources(window);
+  this->DimTextures.ReleaseGraphicsResources(window);
   this->Tables.ReleaseGraphicsResources(window);
   this->Programs.ReleaseGraphicsResources(window);
   this->Framebuffer->ReleaseGraphicsResources(window);
@@ -306,8 +355,9 @@ std::vector<float> vtkScattererTransportVolume::ReadTransmittance(
   {
     scatterer_gpu::TransportPassState state(window, s.Framebuffer);
     bool summed = false;
-    ok = s.Sweep(s.Last, s.Last.Lights[static_cast<size_t>(light)],
-      scatterer_gpu::SweepOutput::Transmittance, summed, why);
+    ok =
+      scatterer_gpu::SweepTransmittance(s.Pass(s.Last), s.Last.Lights[static_cast<size_t>(light)],
+        scatterer_gpu::SweepOutput::Transmittance, s.CurrentPlan, summed, why);
   }
   s.HasKey = false; // the transmittance texture now holds this light alone
   if (!ok)
@@ -430,7 +480,7 @@ int vtkScattererTransportVolume::GetMediumBuildCount() const
 
 size_t vtkScattererTransportVolume::GetGPUBytes() const
 {
-  return this->Internals->Textures.GetGPUBytes();
+  return this->Internals->Textures.GetGPUBytes() + this->Internals->DimTextures.GetGPUBytes();
 }
 
 void vtkScattererTransportVolume::SetProgressCallback(std::function<void(double)> callback)
@@ -449,6 +499,11 @@ void vtkScattererTransportVolume::PrintSelf(ostream& os, vtkIndent indent)
   const vtkInternals& s = *this->Internals;
   os << indent << "Dimensions: " << s.Grid.Dims[0] << " x " << s.Grid.Dims[1] << " x "
      << s.Grid.Dims[2] << "\n";
+  if (s.DimTextures.Arriving)
+  {
+    os << indent << "DimLightDimensions: " << s.DimGrid.Dims[0] << " x " << s.DimGrid.Dims[1]
+       << " x " << s.DimGrid.Dims[2] << "\n";
+  }
   os << indent << "Builds: " << s.Builds << "\n";
   os << indent << "MediumBuilds: " << s.MediumBuilds << "\n";
   os << indent << "LastBuildMilliseconds: " << s.LastMs << "\n";

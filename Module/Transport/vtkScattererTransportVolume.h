@@ -184,6 +184,10 @@ public:
     /// The diffusion draws only the coarse texels that hold a medium
     /// (ScattererTransportTiles.h); false (tests only): every coarse texel.
     bool DiffuseOnTiles = true;
+    /// Lights dimmer than half the brightest are swept on a grid twice as coarse
+    /// (DimLightsOf, ScattererTransportLightPasses.h); false (tests only): every light on
+    /// the fine grid.
+    bool CoarseDimLights = true;
     float MultipleScattering = 1; ///< strength of the multiple-scattering term (0: none)
     int DiffusionIterations = 8;  ///< Jacobi iterations of the diffusion solve
 

@@ -1104,6 +1104,144 @@ TEST(TransportVolume, LightsAddUpWhateverTheirOrder)
   }
 }
 
+namespace
+{
+// The received light (RGB, grid order, grid @p dims) of @p scene with the dim lights swept
+// on their coarser grid (the default) or, not @p coarse, every light on the fine grid.
+std::vector<float> LightWithDimLights(TransportScene& scene, bool coarse, int dims[3])
+{
+  scene.Mapper->SetCoarseDimLightsForTesting(coarse);
+  return scene.RenderAndRead(
+    [dims](vtkScattererTransportVolume* transport, vtkOpenGLRenderWindow* gl)
+    {
+      transport->GetDimensions(dims);
+      return transport->ReadLight(gl);
+    });
+}
+
+vtkSmartPointer<vtkLight> DirectionalLight(double c, double x, double y, double z, double intensity)
+{
+  auto light = vtkSmartPointer<vtkLight>::New();
+  light->SetLightTypeToSceneLight();
+  light->SetFocalPoint(c, c, c);
+  light->SetPosition(c + x, c + y, c + z);
+  light->SetIntensity(intensity);
+  return light;
+}
+}
+
+TEST(TransportVolume, DimLightsSweptOnACoarserGridBringTheirLight)
+{
+  // A light dimmer than half the brightest is swept on a grid twice as coarse (DimLightsOf,
+  // ScattererTransportLightPasses.h) and its light added to the fine grid's, read
+  // trilinearly (scatterer_transport_dim_lights.glsl). At TransportScale 2 (fine texel j =
+  // voxel 2 j), against the same scene with every light on the fine grid:
+  // 1. A thick homogeneous slab (z in [10, 41], opacity 0.05 per unit) lit from above at
+  //    intensity 1 and obliquely at 0.3, from (1, 0.5, 1). Away from the slab's faces (3
+  //    fine texels) the medium is the same over every texel, coarse or fine, so the coarse
+  //    sweep is Beer-Lambert as the fine one, but for where a texel's light is taken: a
+  //    texel holds the light entering it, half a coarse texel from its centre toward the
+  //    light, half a fine texel nearer the light than a fine texel's. The dim light's
+  //    light is then exp(sigma l / 2) brighter (l the fine texel's path, 3 voxels here:
+  //    8 %), 1.6 % of the sum here, where it brings a fifth. Within 2.5 %, where the
+  //    oblique light came in through the slab's top (x < 16, y < 26), not its sides. The
+  //    dim light's light misplaced by one coarse texel along z differs there by
+  //    exp(-sigma 4 * 1.5), 27 %, a fifth of which shows in the sum.
+  // 2. An opaque ball over a plate, the plate's top lit only by the dim light (the bright
+  //    light from below stops in the plate): the ball's shadow on the plate lies where
+  //    the fine sweep puts it, its centroid within half a fine texel.
+  const int n = 48;
+  const double c = 0.5 * (n - 1);
+  int dims[3] = { 0, 0, 0 };
+  const auto index = [&dims](int i, int j, int k)
+  { return 3 * (static_cast<size_t>(i) + dims[0] * (j + static_cast<size_t>(dims[1]) * k)); };
+  {
+    TransportScene scene(MakeVolume(n, 1.0, Slab(10, 41)), 0.05);
+    scene.Mapper->SetTransportScale(2);
+    scene.Renderer->RemoveAllLights();
+    scene.Renderer->AddLight(DirectionalLight(c, 0, 0, 1, 1.0));
+    scene.Renderer->AddLight(DirectionalLight(c, 1, 0.5, 1, 0.3));
+    const auto fine = LightWithDimLights(scene, false, dims);
+    const auto coarse = LightWithDimLights(scene, true, dims);
+    ASSERT_EQ(dims[0], 25);
+    ASSERT_EQ(coarse.size(), fine.size());
+    ASSERT_EQ(fine.size(), 3u * 25 * 25 * 25);
+    // Fine texels k in [5, 20] hold the slab (z = 2 k); its interior 3 texels from the
+    // faces, and below it (k < 2) where the light has crossed all of it; 3 texels from the
+    // grid's sides, and x < 16, y < 26 (i < 8, j < 13), where the oblique light came
+    // through the slab's top.
+    double worst = 0.0, dimShare = 0.0;
+    for (int k = 0; k < 25; ++k)
+    {
+      if (!(k >= 8 && k <= 17) && k > 1)
+      {
+        continue;
+      }
+      for (int j = 3; j < 13; ++j)
+      {
+        for (int i = 3; i < 8; ++i)
+        {
+          const size_t v = index(i, j, k);
+          worst = std::max(worst, std::abs(coarse[v] - fine[v]) / static_cast<double>(fine[v]));
+        }
+      }
+    }
+    // What the dim light brings there: the light without it, relative.
+    scene.Renderer->RemoveAllLights();
+    scene.Renderer->AddLight(DirectionalLight(c, 0, 0, 1, 1.0));
+    const auto bright = LightWithDimLights(scene, true, dims);
+    for (int k = 8; k <= 17; ++k)
+    {
+      const size_t v = index(5, 12, k);
+      dimShare = std::max(dimShare, (fine[v] - bright[v]) / static_cast<double>(fine[v]));
+    }
+    std::printf("slab: dim light coarse against fine: worst %.4f (the dim light brings up to %.3f "
+                "of the light)\n",
+      worst, dimShare);
+    ASSERT_GT(dimShare, 0.1) << "the dim light brings little: the test sees little";
+    EXPECT_LT(worst, 0.025) << "the dim light's coarse sweep is not Beer-Lambert in the slab";
+  }
+  {
+    LitBallOverPlate lit(1.0, 0.95);
+    TransportScene& scene = lit.Scene;
+    scene.Mapper->SetTransportScale(2);
+    scene.Renderer->RemoveAllLights();
+    scene.Renderer->AddLight(DirectionalLight(c, 0, 0, -1, 1.0));
+    scene.Renderer->AddLight(DirectionalLight(c, 0.25, 0, 1, 0.3));
+    const auto fine = LightWithDimLights(scene, false, dims);
+    const auto coarse = LightWithDimLights(scene, true, dims);
+    ASSERT_EQ(coarse.size(), fine.size());
+    ASSERT_EQ(dims[0], 25);
+    // Fine layer k = 4 (z = 8, just above the plate): the shadow's darkness, lit level
+    // less the light, weighted by x; predicted centre x = 24 - 0.25 (36 - 8) = 17, texel
+    // 8.5.
+    const auto centroid = [&](const std::vector<float>& light, double& depth)
+    {
+      const float lit = light[index(22, 6, 4)];
+      double sum = 0.0, moment = 0.0;
+      for (int j = 0; j < 25; ++j)
+      {
+        for (int i = 0; i < 25; ++i)
+        {
+          const double dark = std::max(0.0, static_cast<double>(lit - light[index(i, j, 4)]));
+          sum += dark;
+          moment += dark * i;
+        }
+      }
+      depth = 1.0 - light[index(8, 12, 4)] / lit;
+      return sum > 0.0 ? moment / sum : -1.0;
+    };
+    double fineDepth = 0.0, coarseDepth = 0.0;
+    const double fineAt = centroid(fine, fineDepth), coarseAt = centroid(coarse, coarseDepth);
+    std::printf("ball's shadow from the dim light: centroid x %.2f texels (fine sweep %.2f), "
+                "depth %.2f (%.2f)\n",
+      coarseAt, fineAt, coarseDepth, fineDepth);
+    ASSERT_GT(fineDepth, 0.5) << "the fine sweep casts no shadow: the test sees nothing";
+    EXPECT_NEAR(coarseAt, fineAt, 0.5) << "the dim light's shadow is misplaced";
+    EXPECT_GT(coarseDepth, 0.5) << "the dim light casts no shadow";
+  }
+}
+
 TEST(TransportVolume, PhotonsPastTheGridSeeTheLightUnattenuated)
 {
   // Past the grid there is no matter: a photon there reads T = 1 (the transmittance's
