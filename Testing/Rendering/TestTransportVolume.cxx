@@ -1150,6 +1150,7 @@ TEST(TransportVolume, DimLightsSweptOnACoarserGridBringTheirLight)
   // 2. An opaque ball over a plate, the plate's top lit only by the dim light (the bright
   //    light from below stops in the plate): the ball's shadow on the plate lies where
   //    the fine sweep puts it, its centroid within half a fine texel.
+  // That the dim light had a grid of its own is checked by its textures' GPU bytes.
   const int n = 48;
   const double c = 0.5 * (n - 1);
   int dims[3] = { 0, 0, 0 };
@@ -1162,10 +1163,13 @@ TEST(TransportVolume, DimLightsSweptOnACoarserGridBringTheirLight)
     scene.Renderer->AddLight(DirectionalLight(c, 0, 0, 1, 1.0));
     scene.Renderer->AddLight(DirectionalLight(c, 1, 0.5, 1, 0.3));
     const auto fine = LightWithDimLights(scene, false, dims);
+    const size_t fineBytes = scene.GPUBytes;
     const auto coarse = LightWithDimLights(scene, true, dims);
     ASSERT_EQ(dims[0], 25);
     ASSERT_EQ(coarse.size(), fine.size());
     ASSERT_EQ(fine.size(), 3u * 25 * 25 * 25);
+    // The dim light's grid holds its own textures: without them nothing here is compared.
+    ASSERT_GT(scene.GPUBytes, fineBytes) << "the dim light was not swept on a grid of its own";
     // Fine texels k in [5, 20] hold the slab (z = 2 k); its interior 3 texels from the
     // faces, and below it (k < 2) where the light has crossed all of it; 3 texels from the
     // grid's sides, and x < 16, y < 26 (i < 8, j < 13), where the oblique light came
