@@ -32,6 +32,7 @@ bool TransportGrid::Place(
   // Every ds-th structured index from index 0; one more at each end covers the
   // texture's edges.
   const int ds = std::max(1, downsample);
+  this->Downsample = ds;
   for (int a = 0; a < 3; ++a)
   {
     const int n = std::max(1, volumeDims[a]);
@@ -92,6 +93,17 @@ double TransportGrid::TexelLength(int a) const
 {
   const double* g = this->GridToWorld;
   return std::sqrt(g[a] * g[a] + g[3 + a] * g[3 + a] + g[6 + a] * g[6 + a]);
+}
+
+void TransportGrid::GetPositionsOn(const TransportGrid& to, float scale[3], float offset[3]) const
+{
+  const double ratio = static_cast<double>(this->Downsample) / to.Downsample;
+  for (int a = 0; a < 3; ++a)
+  {
+    const bool flat = to.Dims[a] < 2;
+    scale[a] = flat ? 0.0f : static_cast<float>(ratio);
+    offset[a] = flat ? 0.0f : static_cast<float>(this->FirstIndex[a] * ratio - to.FirstIndex[a]);
+  }
 }
 
 void TransportGrid::GetDims(float dims[3]) const

@@ -24,6 +24,7 @@ int FloorDiv(int a, int b);
 struct TransportGrid
 {
   int Dims[3] = { 0, 0, 0 };
+  int Downsample = 1;              ///< volume voxels per grid texel along each axis
   int FirstIndex[3] = { 0, 0, 0 }; ///< global index (in grid texels) of grid texel 0
   /// Grid texel j -> volume texture coordinate: j * GridToTex + GridToTexOffset.
   double GridToTex[3] = { 0, 0, 0 };
@@ -49,6 +50,14 @@ struct TransportGrid
 
   /** Dims as floats (the passes' uniforms). */
   void GetDims(float dims[3]) const;
+
+  /**
+   * Where this grid's positions lie on grid @p to (both placed on the same volume, at any
+   * Downsample): position j here is j * scale + offset there. Texel j lies at global
+   * index (F + j) d, which on @p to is (F + j) d / d_to - F_to. An axis of one texel on
+   * @p to maps to its texel, 0.
+   */
+  void GetPositionsOn(const TransportGrid& to, float scale[3], float offset[3]) const;
 };
 
 /** The diffusion's coarse grid: blocks of Block^3 fine texels, anchored like the fine

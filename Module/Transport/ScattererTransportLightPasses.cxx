@@ -26,25 +26,17 @@ namespace scatterer_gpu
 namespace
 {
 // Where the sweeps read the texels' mean extinction (st_gridToMeansScale, ..._Offset,
-// st_farMeanShift: scatterer_transport_sweep_common.glsl). On the dim lights' grid the
-// means are the fine grid's: texel j of the grid lies at global index (F + j) d, which is
-// fine texel (F + j) d / f - F_f (d, f voxels per texel, F their first indices).
+// st_farMeanShift: scatterer_transport_sweep_common.glsl): on the dim lights' grid, the
+// fine grid's means.
 void SetMeansUniforms(vtkShaderProgram* program, const TransportPass& pass)
 {
-  const TransportGrid& grid = pass.Grid;
-  const TransportGrid& means = pass.MeansGrid ? *pass.MeansGrid : grid;
-  const double ratio = pass.MeansGrid
-    ? static_cast<double>(pass.SweepDownsample()) / std::max(1, pass.In.Downsample)
-    : 1.0;
+  const TransportGrid& means = pass.MeansGrid ? *pass.MeansGrid : pass.Grid;
   float scale[3], offset[3];
-  for (int a = 0; a < 3; ++a)
+  pass.Grid.GetPositionsOn(means, scale, offset);
+  for (int a = 0; a < 3; ++a) // position -> texture coordinate
   {
-    const double n = means.Dims[a];
-    const bool flat = means.Dims[a] < 2; // one texel: its centre
-    scale[a] = flat ? 0.0f : static_cast<float>(ratio / n);
-    offset[a] = flat
-      ? 0.5f
-      : static_cast<float>((grid.FirstIndex[a] * ratio - means.FirstIndex[a] + 0.5) / n);
+    scale[a] /= means.Dims[a];
+    offset[a] = (offset[a] + 0.5f) / means.Dims[a];
   }
   program->SetUniform3f("st_gridToMeansScale", scale);
   program->SetUniform3f("st_gridToMeansOffset", offset);
@@ -88,7 +80,7 @@ public:
       program->SetUniformf("st_stepLength", static_cast<float>(step.Length));
     }
     program->SetUniformi(
-      "st_stepSamples", ExtinctionSampling::For(pass.SweepDownsample()).StepSamples);
+      "st_stepSamples", ExtinctionSampling::For(pass.Grid.Downsample).StepSamples);
     SetMeansUniforms(program, pass);
     program->SetUniformf("st_sliceOrigin", static_cast<float>(pass.Grid.FirstIndex[plan.Axis]));
     program->SetUniformf("st_firstSlice", static_cast<float>(plan.Runs.front().first));
@@ -327,7 +319,7 @@ bool SweepTransmittance(const TransportPass& pass, const vtkScattererTransportVo
   vtkOpenGLQuadHelper* lines = nullptr;
   vtkOpenGLQuadHelper* texels = nullptr;
   const bool arriving = output != SweepOutput::Transmittance;
-  const bool oneSample = ExtinctionSampling::For(pass.SweepDownsample()).StepSamples == 1;
+  const bool oneSample = ExtinctionSampling::For(pass.Grid.Downsample).StepSamples == 1;
   if (!light.Positional && pass.SweepLinesInParallel &&
     pass.Programs.SweepLines(pass.Window, enteringKind, arriving, oneSample, lines, texels))
   {
@@ -418,19 +410,10 @@ bool AddDimLights(const TransportPass& pass, const TransportPass& dim, std::stri
     return false;
   }
   vtkShaderProgram* program = UseProgram(pass.Window, quad);
-  // Fine texel j lies at global index (F + j) f, dim grid position (F + j) f / d - F_d
-  // (f, d voxels per texel, F, F_d the grids' first indices).
-  const double ratio = static_cast<double>(pass.SweepDownsample()) / dim.SweepDownsample();
   float gridDims[3], dimDims[3], scale[3], offset[3];
   pass.Grid.GetDims(gridDims);
   dim.Grid.GetDims(dimDims);
-  for (int a = 0; a < 3; ++a)
-  {
-    const bool flat = dim.Grid.Dims[a] < 2;
-    scale[a] = flat ? 0.0f : static_cast<float>(ratio);
-    offset[a] =
-      flat ? 0.0f : static_cast<float>(pass.Grid.FirstIndex[a] * ratio - dim.Grid.FirstIndex[a]);
-  }
+  pass.Grid.GetPositionsOn(dim.Grid, scale, offset);
   program->SetUniform3f("st_gridDims", gridDims);
   program->SetUniform3f("st_dimDims", dimDims);
   program->SetUniform3f("st_gridToDimScale", scale);

@@ -31,19 +31,11 @@ struct TransportPass
   /// A directional light's lines swept in parallel where the implementation can
   /// (vtkScattererTransportVolume::SweepLinesInParallel)
   bool SweepLinesInParallel = true;
-  /// Volume voxels per texel of Grid: In.Downsample, or twice it on the grid of the dim
-  /// lights (DimLightsOf, ScattererTransportLightPasses.h); 0: In.Downsample.
-  int Downsample = 0;
   /// The grid whose texels' mean extinction Textures.FineExtinction holds (pass 0a), which
   /// the sweeps read for a step's far half: Grid itself (null), or, on the dim lights'
   /// grid, the fine grid, whose textures hold the means (MeansTexture).
   const TransportGrid* MeansGrid = nullptr;
   vtkTextureObject* MeansTexture = nullptr; ///< null: Textures.FineExtinction
-
-  int SweepDownsample() const
-  {
-    return this->Downsample > 0 ? this->Downsample : this->In.Downsample;
-  }
 };
 }
 

@@ -54,8 +54,8 @@ void st_stepTowardLight(vec3 toward, out vec3 stepSweep, out vec3 stepGrid, out 
 // their texels' draw (scatterer_transport_line_texels.glsl) has yet to read: st_lineSlots
 // of them, a ring, slice z in layer z mod st_lineSlots. The texels' draw follows every
 // few draws of the lines (kTexelSlices, ScattererTransportLightPasses.cxx), so the ring
-// holds their slices and the slice before them, not the whole sweep (2 bytes a transport
-// voxel).
+// holds their slices and the slice before them, not the whole sweep (RG16F, 4 bytes a
+// transport voxel).
 uniform int st_lineSlots;
 int st_lineSlot(float z)
 {

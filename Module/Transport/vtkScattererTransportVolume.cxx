@@ -85,7 +85,6 @@ struct vtkScattererTransportVolume::vtkInternals
   {
     scatterer_gpu::TransportPass pass{ this->Context, this->Framebuffer, this->Programs, in,
       this->DimGrid, this->Tables, this->DimTextures, this->Progress, this->SweepLinesInParallel };
-    pass.Downsample = scatterer_gpu::kDimLightCoarsening * in.Downsample;
     pass.MeansGrid = &this->Grid;
     pass.MeansTexture = this->Textures.FineExtinction;
     return pass;
