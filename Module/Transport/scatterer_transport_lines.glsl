@@ -47,13 +47,13 @@ uniform int st_chunkSlices;
 uniform sampler2D st_lineStart;
 
 // Line k in step i of the sweep (away from the light): its slice z, its texel there, c
-// = k + round(z a) (as st_sliceShift), and its point p = k + z a (grid order); whether c
-// lies in the grid returned.
+// = k + round(z a), and its point p = k + z a (grid order); whether c lies in the grid
+// returned.
 bool st_linePoint(vec2 k, int i, out float z, out vec2 c, out vec3 p)
 {
   z = st_firstSlice - float(i) * st_stepSweep.z; // the slices follow each other away from the light
-  vec2 za = vec2(z + st_sliceOrigin) * st_stepSweep.xy * st_stepSweep.z;
-  c = k + floor(za + 0.5);
+  vec2 za = st_sliceOffset(z, st_stepSweep.xy * st_stepSweep.z);
+  c = k + st_sliceTexels(za);
   p = transpose(st_toSweep) * vec3(k + za, z);
   return all(greaterThanEqual(c, vec2(0.0))) && all(lessThan(c, st_sweepDims.xy));
 }

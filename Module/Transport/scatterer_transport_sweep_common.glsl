@@ -62,12 +62,24 @@ int st_lineSlot(float z)
   return int(z) % st_lineSlots;
 }
 
-// A directional light's shift of slice z, e(z) = round(z a) - z a, with z the global
-// slice index and a the sideways step per slice (stepSweep.xy * stepSweep.z).
+// A directional light's lines through slice z: z a, their sideways offset there (z the
+// global slice index, a the sideways step per slice, stepSweep.xy * stepSweep.z), and
+// round(z a), the whole texels slice z's light is shifted by (the lines' texels).
+vec2 st_sliceOffset(float z, vec2 a)
+{
+  return vec2(z + st_sliceOrigin) * a;
+}
+
+vec2 st_sliceTexels(vec2 za)
+{
+  return floor(za + 0.5);
+}
+
+// The shift of slice z, e(z) = round(z a) - z a.
 vec2 st_sliceShift(float z, vec2 a)
 {
-  vec2 za = vec2(z + st_sliceOrigin) * a;
-  return floor(za + 0.5) - za;
+  vec2 za = st_sliceOffset(z, a);
+  return st_sliceTexels(za) - za;
 }
 
 // The optical depth of the step from grid position j toward the light, in two halves:
