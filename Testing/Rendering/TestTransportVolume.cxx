@@ -1758,6 +1758,29 @@ TEST(TransportVolume, DenseInteriorTexelsWeighLittleInTheRead)
   EXPECT_EQ(*std::min_element(thinWeights.begin(), thinWeights.end()), 1.0f);
 }
 
+namespace
+{
+// Renders @p scene once in the shared window and returns the mean brightness (0-255,
+// over R, G and B) of the picture's middle quarter.
+double MiddleBrightness(TransportScene& scene)
+{
+  const auto pixels = scatterer_testing::RenderSceneOnce(scene.Renderer, scene.Mapper);
+  const int* size = scatterer_testing::SharedWindow()->GetSize();
+  double sum = 0.0;
+  int count = 0;
+  for (int y = size[1] * 3 / 8; y < size[1] * 5 / 8; ++y)
+  {
+    for (int x = size[0] * 3 / 8; x < size[0] * 5 / 8; ++x)
+    {
+      const size_t q = 4 * (static_cast<size_t>(y) * size[0] + x);
+      sum += pixels[q] + pixels[q + 1] + pixels[q + 2];
+      ++count;
+    }
+  }
+  return sum / (3.0 * count);
+}
+}
+
 TEST(TransportVolume, DenseFaceIsLitAlikeWhereverTheTexelsCutIt)
 {
   // A dense slab seen and lit from above at TransportScale 2, its top face at z = 22.5 or
@@ -1778,22 +1801,8 @@ TEST(TransportVolume, DenseFaceIsLitAlikeWhereverTheTexelsCutIt)
     grey->AddRGBPoint(255, 0.8, 0.8, 0.8);
     scene.Property->SetColor(grey);
     scene.Mapper->SetMultipleScattering(0.0);
-    scene.Renderer->ResetCamera(); // looks down -z, at the lit face
-    const auto pixels = scatterer_testing::RenderSceneOnce(scene.Renderer, scene.Mapper);
-    const int* size = scatterer_testing::SharedWindow()->GetSize();
-    // The middle quarter of the picture: the face alone.
-    double sum = 0.0;
-    int count = 0;
-    for (int y = size[1] * 3 / 8; y < size[1] * 5 / 8; ++y)
-    {
-      for (int x = size[0] * 3 / 8; x < size[0] * 5 / 8; ++x)
-      {
-        const size_t q = 4 * (static_cast<size_t>(y) * size[0] + x);
-        sum += pixels[q] + pixels[q + 1] + pixels[q + 2];
-        ++count;
-      }
-    }
-    shown[top - 22] = sum / (3.0 * count);
+    scene.Renderer->ResetCamera();             // looks down -z, at the lit face
+    shown[top - 22] = MiddleBrightness(scene); // the face alone
   }
   std::printf("dense face at z = 22.5: %.1f levels, at 23.5: %.1f\n", shown[0], shown[1]);
   EXPECT_GT(shown[0], 60.0) << "the lit face is dark: nothing is compared";
@@ -1825,29 +1834,12 @@ TEST(TransportVolume, UnoccludedFaceShowsAtStockPhongsBrightness)
   camera->SetPosition(53.5, -16.5, 173.5);
   camera->SetViewUp(0, 1, 0);
   scene.Renderer->ResetCamera();
-  const auto faceBrightness = [&]()
-  {
-    const auto pixels = scatterer_testing::RenderSceneOnce(scene.Renderer, scene.Mapper);
-    const int* size = scatterer_testing::SharedWindow()->GetSize();
-    double sum = 0.0;
-    int count = 0;
-    for (int y = size[1] * 3 / 8; y < size[1] * 5 / 8; ++y)
-    {
-      for (int x = size[0] * 3 / 8; x < size[0] * 5 / 8; ++x)
-      {
-        const size_t q = 4 * (static_cast<size_t>(y) * size[0] + x);
-        sum += pixels[q] + pixels[q + 1] + pixels[q + 2];
-        ++count;
-      }
-    }
-    return sum / (3.0 * count);
-  };
-  const double lit = faceBrightness();
+  const double lit = MiddleBrightness(scene);
   scene.Mapper->SetMultipleScattering(0.0);
-  const double single = faceBrightness();
+  const double single = MiddleBrightness(scene);
   scene.Mapper->SetIlluminationEnabled(false); // the stock mapper
   scene.Property->SetShade(true);
-  const double phong = faceBrightness();
+  const double phong = MiddleBrightness(scene);
   std::printf("unoccluded face: stock Phong %.1f levels, single scattering %.2f x, "
               "defaults %.2f x\n",
     phong, single / phong, lit / phong);
