@@ -1817,7 +1817,7 @@ TEST(TransportVolume, UnoccludedFaceShowsAtStockPhongsBrightness)
   // defaults but TransportScale 2 (the default; the harness's scene is at 1) and linear
   // interpolation: single scattering shows the face at the display's exposure, 0.8 of
   // Phong's diffuse term, and the multiple scattering the matter beneath sends back up
-  // brings it to Phong's or above, the more the more matter lies around (measured 1.22
+  // brings it to Phong's or above, more where more matter lies around (measured 1.22
   // here; 1.01 on measure_faces.py's slab, which leaves a margin to the volume's sides:
   // docs/brightness.md).
   LitSlab slab(48, 1.0, 20, 40, 0.9, 0, 0, 1);
