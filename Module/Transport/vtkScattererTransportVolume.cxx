@@ -162,8 +162,9 @@ bool vtkScattererTransportVolume::vtkInternals::RunPasses(
     why = why.empty() ? "the dim lights' grid is degenerate" : why;
     ok = false;
   }
-  if (!hasDim)
+  if (!hasDim && this->DimTextures.Arriving)
   {
+    // The dim lights' textures are allocated together, the arriving light first.
     this->DimTextures.ReleaseGraphicsResources(this->Context);
   }
   const scatterer_gpu::TransportPass dimPass = this->DimPass(in);
