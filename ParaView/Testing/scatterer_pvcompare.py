@@ -28,6 +28,21 @@ def difference(path_a, path_b):
             "fraction_over_32": float((worst > 32).mean())}
 
 
+def worst_column(path_a, path_b, columns):
+    """The largest mean difference (0..255 levels) down one image column among `columns`,
+    over the rows where the image at path_b draws anything: a seam one pixel wide, which
+    the per-pixel statistics above average away."""
+    a, b = read_rgb(path_a), read_rgb(path_b)
+    drawn = b.max(axis=2) > 0
+    d = (a - b).mean(axis=2)
+    worst = 0.0
+    for c in columns:
+        rows = drawn[:, c]
+        if rows.any():
+            worst = max(worst, abs(float(d[rows, c].mean())))
+    return worst
+
+
 def baseline_error(image_path, baseline_path, temp_dir):
     """VTK's regression-image comparison (what vtkRegressionTestImage does in the
     C++ tests): the error of the best match with the baseline. Difference images go

@@ -35,6 +35,21 @@ constexpr int kMaxGhostLevels = 4096;
 // vtkSmartVolumeMapper's default InteractiveUpdateRate: ParaView's render view asks for
 // 5 frames per second while the user drags and 0.002 for still frames.
 constexpr double kInteractiveUpdateRate = 1.0;
+// How far, in voxels, the cropping plane between two pieces moves off their shared point
+// layer (UpdateMapperParameters): far above the rounding of texture coordinates along a
+// ray, far below anything a picture shows.
+constexpr double kBorderShift = 0.01;
+
+// The cropping plane to give VTK 9.1's ray caster so that it crops point data at `x`
+// along an axis of `n` points, the first at `x0`, `s` apart. The ray caster takes the
+// planes to texture coordinates by the dataset's texture matrix, which spans the points
+// (t = (x - x0) / ((n - 1) s)), but compares them with the samples' coordinates, which
+// span the texels, half a voxel more on each side ((x - x0 + s / 2) / (n s)): a plane
+// given at c crops at c + (c - x0) / (n - 1) - s / 2. Inverted here.
+double PointDataCroppingPlane(double x, double x0, double s, int n)
+{
+  return n > 1 ? x0 + (n - 1.0) / n * (x - x0 + 0.5 * s) : x;
+}
 }
 
 vtkScattererVolumeRepresentation::vtkScattererVolumeRepresentation()
@@ -330,6 +345,35 @@ void vtkScattererVolumeRepresentation::UpdateMapperParameters()
   }
   double planes[6];
   std::copy(this->OwnedBounds, this->OwnedBounds + 6, planes);
+  // Neighbouring pieces share the plane between them (the point layer both hold), and
+  // must crop exactly there, each from its own texture. As given, VTK 9.1 cropped point
+  // data off the plane by an amount that grows with the distance from the piece's first
+  // point (PointDataCroppingPlane), different in the two pieces: rays within a quarter of
+  // a voxel of the plane were composited by both, a bright line one pixel wide where a
+  // view along an axis met the border (the long-shadow scene, 4 ranks: 41 levels of 255
+  // against 33). The planes are corrected for that, and both pieces move the plane by the
+  // same hundredth of a voxel, so that a ray that runs in it lies well inside one piece
+  // whatever the rounding. (The volume's outer faces keep their planes.)
+  auto* piece = vtkImageData::SafeDownCast(this->Cache);
+  const double* spacing = piece->GetSpacing();
+  const double* pieceBounds = piece->GetBounds();
+  int dims[3];
+  piece->GetDimensions(dims);
+  const int mode = this->VolumeMapper->GetScalarMode();
+  const bool pointData =
+    mode != VTK_SCALAR_MODE_USE_CELL_DATA && mode != VTK_SCALAR_MODE_USE_CELL_FIELD_DATA;
+  for (int i = 0; i < 6; ++i)
+  {
+    const int axis = i / 2;
+    const bool interior = i % 2 == 0 ? this->OwnedExtent[i] > this->WholeExtent[i]
+                                     : this->OwnedExtent[i] < this->WholeExtent[i];
+    if (interior)
+    {
+      const double x = this->OwnedBounds[i] + kBorderShift * spacing[axis];
+      planes[i] =
+        pointData ? PointDataCroppingPlane(x, pieceBounds[2 * axis], spacing[axis], dims[axis]) : x;
+    }
+  }
   if (this->UserCropping)
   {
     const double* user = this->VolumeMapper->GetCroppingRegionPlanes();
