@@ -3,6 +3,7 @@
 #include "ScattererChangeKey.h"
 #include "ScattererSceneLights.h"
 #include "ScattererTransportUpdate.h"
+#include "ScattererWarnOnce.h"
 #include "vtkScattererTemplateVolumeMapper.h"
 
 #include "vtkAbstractMapper.h"
@@ -25,6 +26,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <vector>
 
 vtkStandardNewMacro(vtkScattererLightExchange);
 vtkCxxSetObjectMacro(vtkScattererLightExchange, Controller, vtkMultiProcessController);
@@ -97,6 +99,46 @@ void Normalise(const T* scalars, vtkIdType n, double lo, double span, float* out
   }
 }
 
+// Cell values (cells `cells` per axis, x fastest) averaged onto the points of an image of
+// `dims` points: each point takes the mean of the up to 8 cells around it. The extinction
+// grid holds values at points; a map one voxel fine then blurs a shadow's edge by half a
+// voxel more than point data's.
+std::vector<float> CellsOntoPoints(const std::vector<float>& cell, const int dims[3])
+{
+  int cells[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    cells[a] = std::max(dims[a] - 1, 1);
+  }
+  std::vector<float> point(static_cast<size_t>(dims[0]) * dims[1] * dims[2]);
+  size_t p = 0;
+  for (int k = 0; k < dims[2]; ++k)
+  {
+    for (int j = 0; j < dims[1]; ++j)
+    {
+      for (int i = 0; i < dims[0]; ++i, ++p)
+      {
+        double sum = 0.0;
+        int count = 0;
+        for (int ck = std::max(k - 1, 0); ck <= std::min(k, cells[2] - 1); ++ck)
+        {
+          for (int cj = std::max(j - 1, 0); cj <= std::min(j, cells[1] - 1); ++cj)
+          {
+            for (int ci = std::max(i - 1, 0); ci <= std::min(i, cells[0] - 1); ++ci)
+            {
+              sum += cell[static_cast<size_t>(ci) +
+                cells[0] * (cj + static_cast<size_t>(cells[1]) * ck)];
+              ++count;
+            }
+          }
+        }
+        point[p] = static_cast<float>(sum / count);
+      }
+    }
+  }
+  return point;
+}
+
 ls::Box BoxOf(const int extent[6])
 {
   ls::Box b;
@@ -108,14 +150,20 @@ ls::Box BoxOf(const int extent[6])
 
 struct vtkScattererLightExchange::vtkInternals
 {
+  explicit vtkInternals(vtkObject* owner)
+    : Warn(owner)
+  {
+  }
+  scatterer_render::WarnOnce Warn;
   scatterer_render::ChangeKey Inputs; // of the last exchange
   scatterer_render::ChangeKey Sigma;  // of the extinction grid
   ls::ExtinctionGrid Grid;
 
-  /** The extinction grid of @p piece: its scalars normalised over their range, and
-   * sigma_t x OcclusionStrength per world unit tabulated over them (@p occlusion 0: no
-   * shadows). False if the piece has no single-component point scalars the mapper
-   * would render. @p key: what the grid was made from. */
+  /** The extinction grid of @p piece: its scalars normalised over their range (cell
+   * scalars averaged onto the points), and sigma_t x OcclusionStrength per world unit
+   * tabulated over them (@p occlusion 0: no shadows). False if the piece has no
+   * single-component scalars the mapper would render. @p key: what the grid was made
+   * from. */
   bool UpdateGrid(vtkImageData* piece, vtkVolume* volume, vtkScattererTemplateVolumeMapper* mapper,
     float occlusion, std::string& key);
 };
@@ -128,7 +176,7 @@ bool vtkScattererLightExchange::vtkInternals::UpdateGrid(vtkImageData* piece, vt
     mapper->GetArrayAccessMode(), mapper->GetArrayId(), mapper->GetArrayName(), cellFlag);
   vtkVolumeProperty* property = volume->GetProperty();
   vtkPiecewiseFunction* opacity = property ? property->GetScalarOpacity(0) : nullptr;
-  if (!scalars || cellFlag != 0 || scalars->GetNumberOfComponents() != 1 || !opacity)
+  if (!scalars || cellFlag == 2 || scalars->GetNumberOfComponents() != 1 || !opacity)
   {
     return false;
   }
@@ -136,8 +184,8 @@ bool vtkScattererLightExchange::vtkInternals::UpdateGrid(vtkImageData* piece, vt
     ? property->GetScalarOpacityUnitDistance(0)
     : 1.0;
   scatterer_render::KeyWriter k;
-  k << piece->GetMTime() << '|' << scalars->GetMTime() << '|' << opacity->GetMTime() << '|' << unit
-    << '|' << occlusion;
+  k << piece->GetMTime() << '|' << scalars->GetMTime() << '|' << cellFlag << '|'
+    << opacity->GetMTime() << '|' << unit << '|' << occlusion;
   key = k.Key();
   if (!this->Sigma.Differs(key))
   {
@@ -164,25 +212,33 @@ bool vtkScattererLightExchange::vtkInternals::UpdateGrid(vtkImageData* piece, vt
   grid.origin = glm::ivec3(extent[0], extent[2], extent[4]);
   grid.dims = glm::ivec3(dims[0], dims[1], dims[2]);
   const vtkIdType n = scalars->GetNumberOfTuples();
-  grid.values.resize(static_cast<size_t>(n));
+  std::vector<float> normalised(static_cast<size_t>(n));
   switch (scalars->GetDataType())
   {
     vtkTemplateMacro(Normalise(static_cast<const VTK_TT*>(scalars->GetVoidPointer(0)), n, range[0],
-      span, grid.values.data()));
+      span, normalised.data()));
     default:
       for (vtkIdType i = 0; i < n; ++i)
       {
-        grid.values[static_cast<size_t>(i)] =
+        normalised[static_cast<size_t>(i)] =
           static_cast<float>((scalars->GetComponent(i, 0) - range[0]) / span);
       }
   }
+  if (cellFlag == 1 &&
+    n !=
+      static_cast<vtkIdType>(std::max(dims[0] - 1, 1)) * std::max(dims[1] - 1, 1) *
+        std::max(dims[2] - 1, 1))
+  {
+    return false;
+  }
+  grid.values = cellFlag == 1 ? CellsOntoPoints(normalised, dims) : std::move(normalised);
   grid.prepare();
   this->Sigma.Record(key);
   return true;
 }
 
 vtkScattererLightExchange::vtkScattererLightExchange()
-  : Internals(new vtkInternals)
+  : Internals(new vtkInternals(this))
 {
 }
 
@@ -228,6 +284,12 @@ void vtkScattererLightExchange::Exchange(vtkRenderer* renderer, vtkVolume* volum
   std::string gridKey;
   const bool hasPiece = piece && piece->GetNumberOfPoints() > 0 &&
     this->Internals->UpdateGrid(piece, volume, mapper, occlusion, gridKey);
+  if (piece && piece->GetNumberOfPoints() > 0 && !hasPiece)
+  {
+    this->Internals->Warn("The light exchange takes the volume's scalars as one component of "
+                          "point or cell data: this piece's matter casts no shadow on the "
+                          "other pieces beyond their ghost layers.");
+  }
   const IndexFrame frame = hasPiece ? FrameOf(piece, volume) : IndexFrame();
   // Still frames: lines one voxel apart, since a coarser map blurs the edges of the
   // shadows it carries (a 2-voxel map doubled the error of the long-shadow test's

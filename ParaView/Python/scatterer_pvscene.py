@@ -188,12 +188,13 @@ def apply_camera(view, scene=CT_HEAD_SCENE):
     view.CameraParallelProjection = 0
 
 
-def show_volume(source, view, representation, scene=CT_HEAD_SCENE):
+def show_volume(source, view, representation, scene=CT_HEAD_SCENE, association="POINTS"):
     """Shows `source` as `representation` ("Volume" or "Scatterer Volume") with the
-    scene's transfer functions."""
+    scene's transfer functions, its array ImageFile taken from `association` ("POINTS"
+    or "CELLS")."""
     display = Show(source, view)
     display.SetRepresentationType(representation)
-    ColorBy(display, ("POINTS", "ImageFile"))
+    ColorBy(display, (association, "ImageFile"))
     display.SetScalarBarVisibility(view, False)
     lut = GetColorTransferFunction("ImageFile")
     lut.AutomaticRescaleRangeMode = "Never"
