@@ -176,7 +176,8 @@ bool vtkScattererLightExchange::vtkInternals::UpdateGrid(vtkImageData* piece, vt
     mapper->GetArrayAccessMode(), mapper->GetArrayId(), mapper->GetArrayName(), cellFlag);
   vtkVolumeProperty* property = volume->GetProperty();
   vtkPiecewiseFunction* opacity = property ? property->GetScalarOpacity(0) : nullptr;
-  if (!scalars || cellFlag == 2 || scalars->GetNumberOfComponents() != 1 || !opacity)
+  if (!scalars || cellFlag == 2 || scalars->GetNumberOfComponents() != 1 || !opacity ||
+    (cellFlag == 1 && scalars->GetNumberOfTuples() != piece->GetNumberOfCells()))
   {
     return false;
   }
@@ -223,13 +224,6 @@ bool vtkScattererLightExchange::vtkInternals::UpdateGrid(vtkImageData* piece, vt
         normalised[static_cast<size_t>(i)] =
           static_cast<float>((scalars->GetComponent(i, 0) - range[0]) / span);
       }
-  }
-  if (cellFlag == 1 &&
-    n !=
-      static_cast<vtkIdType>(std::max(dims[0] - 1, 1)) * std::max(dims[1] - 1, 1) *
-        std::max(dims[2] - 1, 1))
-  {
-    return false;
   }
   grid.values = cellFlag == 1 ? CellsOntoPoints(normalised, dims) : std::move(normalised);
   grid.prepare();
