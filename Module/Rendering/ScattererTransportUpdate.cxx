@@ -214,6 +214,7 @@ std::string TransportUpdate::UpdateVolume(vtkRenderer* ren, vtkVolume* vol, cons
     t.ScalarBias[c] = raw ? 0.0f : volumeTexture->Bias[c];
   }
   t.VolumeUploadTime = volumeTexture->UploadTime.GetMTime();
+  t.VolumeFilter = t.Volume->GetMagnificationFilter();
   // A binary mask: masked-out matter neither shows (the ray caster's mask) nor casts
   // shadow or scatters (the transport volume). A label-map mask: each label's medium
   // comes from its own transfer functions, in the picture and in the light.
@@ -285,6 +286,7 @@ std::string TransportUpdate::UpdateParts(
     out.ScalarScale = texture->HandleLargeDataTypes ? 1.0f : texture->Scale[0];
     out.ScalarBias = texture->HandleLargeDataTypes ? 0.0f : texture->Bias[0];
     out.UploadTime = texture->UploadTime.GetMTime();
+    out.Filter = out.Volume->GetMagnificationFilter();
     vtkNew<vtkMatrix4x4> texToDataset;
     TextureToDataset(part.Image, part.CellFlag, out.Volume, texToDataset, nullptr);
     texToWorld.push_back(vtkSmartPointer<vtkMatrix4x4>::New());
@@ -382,6 +384,7 @@ std::string TransportUpdate::UpdateParts(
   // binds the volume (nothing reads it).
   t.Volume = t.Parts.front().Volume;
   t.VolumeUploadTime = 0;
+  t.VolumeFilter = 0;
   for (int c = 0; c < 4; ++c)
   {
     t.ScalarScale[c] = 1.0f;

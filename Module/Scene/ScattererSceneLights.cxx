@@ -1,5 +1,6 @@
 #include "ScattererSceneLights.h"
 
+#include "vtkCamera.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMath.h"
@@ -51,12 +52,23 @@ LightSet CollectLights(vtkRenderer* renderer, vtkVolumeProperty* property)
     {
       continue;
     }
-    // The renderer has already placed headlights and camera lights for this
-    // frame (vtkRenderer::UpdateLightsGeometryToFollowCamera), so the
-    // transformed position and focal point are in world coordinates.
+    // The renderer has already placed camera lights for this frame
+    // (vtkRenderer::UpdateLightsGeometryToFollowCamera), so the transformed position and
+    // focal point are in world coordinates. A headlight sits at the camera (vtkLight)
+    // whether or not the renderer moved it there: it does only while LightFollowCamera
+    // is on, and VTK 9.1's ray caster lights a lone headlight from the camera either way.
     double position[3], focal[3];
-    light->GetTransformedPosition(position);
-    light->GetTransformedFocalPoint(focal);
+    vtkCamera* camera = renderer->GetActiveCamera();
+    if (light->LightTypeIsHeadlight() && camera)
+    {
+      camera->GetPosition(position);
+      camera->GetFocalPoint(focal);
+    }
+    else
+    {
+      light->GetTransformedPosition(position);
+      light->GetTransformedFocalPoint(focal);
+    }
     if (!SettingsFinite(light, kd, ka) ||
       !AllFinite({ position[0], position[1], position[2], focal[0], focal[1], focal[2] }))
     {

@@ -43,6 +43,7 @@ std::uint64_t MediumKey(const vtkScattererTransportVolume::Inputs& in)
   Fingerprint f;
   f.Add(in.Volume);
   f.Add(in.VolumeUploadTime);
+  f.Add(in.VolumeFilter);
   f.Add(in.Mask);
   f.Add(in.MaskUploadTime);
   f.Add(in.LabelMask);
@@ -78,6 +79,7 @@ std::uint64_t MediumKey(const vtkScattererTransportVolume::Inputs& in)
   {
     f.Add(part.Volume);
     f.Add(part.UploadTime);
+    f.Add(part.Filter);
     f.Add(part.ScalarScale);
     f.Add(part.ScalarBias);
     f.Add(part.BoxToTexture, 16);

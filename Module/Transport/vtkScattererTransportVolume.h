@@ -116,6 +116,10 @@ public:
     float VoxelStep[3] = { 0, 0, 0 };           ///< one texel of the volume texture (Transfer2D)
     float GradientAspect[3] = { 1, 1, 1 }; ///< spacing * 2 / mean spacing, per axis (Transfer2D)
     unsigned long VolumeUploadTime = 0;    ///< changes when the texture's content does
+    /// The texture's filter (GL_NEAREST or GL_LINEAR, the property's interpolation type):
+    /// the passes sample the medium through it, and VTK changes it in place, without an
+    /// upload.
+    int VolumeFilter = 0;
     /// One input of a vtkMultiVolume, read through its own placement.
     struct Part
     {
@@ -123,6 +127,7 @@ public:
       float ScalarScale = 1, ScalarBias = 0; ///< texel -> normalised scalar
       double BoxToTexture[16] = {};          ///< box texture coordinates -> Volume's (row-major)
       unsigned long UploadTime = 0;
+      int Filter = 0; ///< as VolumeFilter, this input's
     };
     /// A vtkMultiVolume (MultiInput; at most kMaxParts): VTK 9.1 composites its inputs one
     /// after the other at each ray step, so their extinctions add up. The transport is

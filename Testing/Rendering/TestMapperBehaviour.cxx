@@ -419,6 +419,40 @@ TEST(MapperBehaviour, CroppingClippingAndOpaqueGeometryCoverTheSamePixelsAsStock
   EXPECT_EQ(geometrySame, geometry) << "pixels of the opaque sphere changed";
 }
 
+TEST(MapperBehaviour, HeadlightShinesFromTheCameraWhetherOrNotTheRendererMovesIt)
+{
+  // A headlight sits at the camera (vtkLight). The renderer moves it there only while
+  // LightFollowCamera is on; VTK 9.1's ray caster lights a lone headlight from the camera
+  // either way. With following switched off, the light came from where the headlight
+  // was last placed (or from vtkLight's default place, had it never been).
+  const auto addHeadlight = [](Scene& scene)
+  {
+    vtkNew<vtkLight> headlight;
+    headlight->SetLightTypeToHeadlight();
+    scene.Renderer->AddLight(headlight);
+  };
+  Scene scene(false, 0);
+  addHeadlight(scene);
+  const auto before = scene.Render();
+  scene.Renderer->LightFollowCameraOff();
+  scene.Renderer->GetActiveCamera()->Azimuth(70);
+  scene.Renderer->ResetCameraClippingRange();
+  const auto notFollowing = scene.Render();
+  scene.Renderer->LightFollowCameraOn();
+  const auto following = scene.Render();
+  EXPECT_LE(MaxDifference(notFollowing, following), 1)
+    << "the headlight stayed where the renderer last put it";
+  EXPECT_GT(MaxDifference(before, following), 40) << "the camera's turn changes nothing: no test";
+
+  Scene fresh(false, 0);
+  addHeadlight(fresh);
+  fresh.Renderer->LightFollowCameraOff();
+  fresh.Renderer->GetActiveCamera()->Azimuth(70);
+  fresh.Renderer->ResetCameraClippingRange();
+  EXPECT_LE(MaxDifference(fresh.Render(), following), 1)
+    << "a headlight never placed by the renderer shines from vtkLight's default place";
+}
+
 TEST(MapperBehaviour, LightKitLightsTheVolumeWithEveryLight)
 {
   // ParaView's default lighting: vtkLightKit's key, fill and back lights, which follow

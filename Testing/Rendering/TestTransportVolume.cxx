@@ -884,6 +884,49 @@ TEST(TransportVolume, MediumPassesRunWhenTheMediumChangesNotWhenALightMoves)
   EXPECT_LE(worst, 1e-6f * largest) << "the build after the edit used the old medium";
 }
 
+// The passes sample the medium through the ray caster's own texture, whose filter VTK
+// switches in place when the property's interpolation type changes (no upload): a
+// change of interpolation lights as a first build with it does. Found stale by a
+// change-then-render sweep (2026-12-07): the light stayed nearest-filtered.
+TEST(TransportVolume, InterpolationChangeLightsAsAFirstBuildDoes)
+{
+  const auto edit = [](TransportScene& scene)
+  {
+    scene.Property->SetInterpolationTypeToLinear();
+    scene.SetDirectional(1, 0, 1);
+  };
+  std::vector<float> before, edited;
+  {
+    SlabInWindow slab;
+    slab.Scene.SetDirectional(1, 0, 1);
+    slab.Window->Render();
+    before = slab.Transport->ReadLight(vtkOpenGLRenderWindow::SafeDownCast(slab.Window));
+    const int first = slab.Transport->GetMediumBuildCount();
+    edit(slab.Scene);
+    slab.Window->Render();
+    EXPECT_EQ(slab.Transport->GetMediumBuildCount(), first + 1)
+      << "an interpolation change was not seen";
+    edited = slab.Transport->ReadLight(vtkOpenGLRenderWindow::SafeDownCast(slab.Window));
+  }
+  TransportScene fresh(MakeVolume(24, 1.0, Slab(8, 15)), 0.3);
+  edit(fresh);
+  const std::vector<float> expected = fresh.ReceivedLight();
+  ASSERT_EQ(edited.size(), expected.size());
+  ASSERT_EQ(before.size(), expected.size());
+  float largest = 0.0f, worst = 0.0f, change = 0.0f;
+  for (size_t i = 0; i < edited.size(); ++i)
+  {
+    largest = std::max(largest, expected[i]);
+    worst = std::max(worst, std::abs(edited[i] - expected[i]));
+    change = std::max(change, std::abs(before[i] - expected[i]));
+  }
+  std::printf("after the change vs a first build: largest difference %g (nearest against "
+              "linear: %g) of %g\n",
+    worst, change, largest);
+  ASSERT_GT(change, 0.01f * largest) << "nearest and linear light the slab alike: no test";
+  EXPECT_LE(worst, 1e-6f * largest) << "the build after the change used the old filter";
+}
+
 // Colour bleeding (Lee, Kwon, Shin 2016, section 3.3) where two materials touch: photons
 // of a texel that land in the other material carry its colour. Only the texels whose
 // photons cross take that gather (pass 0a marks them, and each layer is drawn by the
