@@ -366,7 +366,7 @@ scatterer_render::IlluminationParameters vtkScattererTemplateVolumeMapper::Gathe
 }
 
 /*
- * GPURender: plan the frame, refresh the templates and (transport mode) the light
+ * GPURender: plan the frame, load the volume, refresh the templates and (transport mode) the light
  * transport volume, then render with the illumination GLSL; any stage that
  * cannot do its part says why and the volume renders as the stock mapper would.
  */
@@ -377,6 +377,10 @@ void vtkScattererTemplateVolumeMapper::GPURender(vtkRenderer* ren, vtkVolume* vo
   const scatterer_render::IlluminationParameters parameters = this->GatherParameters();
   scatterer_render::FramePlan plan;
   std::string stock = this->PlanFrame(ren, vol, parameters, plan);
+  if (stock.empty())
+  {
+    stock = this->LoadVolume(ren, vol, plan);
+  }
   if (stock.empty())
   {
     stock = in.Templates.Update(
@@ -561,27 +565,41 @@ std::string vtkScattererTemplateVolumeMapper::PlanFrame(vtkRenderer* ren, vtkVol
   return stock;
 }
 
+/*
+ * The ray caster's own textures, loaded (on a first frame) before this frame makes any of
+ * its own: the transport volume reads the scalar texture, and PreLoadData registers the
+ * frame's window. A mapper shown in another window than last frame has VTK release the
+ * last window's resources then; left to the ray caster's own GPURender, that came after
+ * this frame's template texture was made for the new window, released it, and the
+ * per-sample frame was drawn unlit (MapperBehaviour.OneVolumeShownInTwoWindowsIsLitInEach).
+ */
+std::string vtkScattererTemplateVolumeMapper::LoadVolume(
+  vtkRenderer* ren, vtkVolume* vol, const scatterer_render::FramePlan& plan)
+{
+  if (!this->PreLoadData(ren, vol) || this->AssembledInputs.empty())
+  {
+    return "the volume could not be loaded into a texture";
+  }
+  // VTK 9.1: a partitioned texture loaded (PreLoadData) but not yet drawn throws when it
+  // is loaded again (ClearBlocks reads the sorted block list only drawing fills), as the
+  // ray caster does next on a first frame. Sorting the blocks now, as drawing does first,
+  // makes that reload safe.
+  vtkVolumeTexture* texture = this->AssembledInputs.begin()->second.Texture;
+  const auto& parts = texture->GetPartitions();
+  if (parts[0] * parts[1] * parts[2] > 1 && plan.Parts.empty())
+  {
+    texture->SortBlocksBackToFront(ren, vol->GetMatrix());
+  }
+  return "";
+}
+
 std::string vtkScattererTemplateVolumeMapper::UpdateTransport(vtkRenderer* ren, vtkVolume* vol,
   const scatterer_render::IlluminationParameters& parameters,
   const scatterer_render::FramePlan& plan)
 {
   vtkInternals& in = *this->Internals;
-  // The ray caster's own scalar texture: loaded now if this is the first frame.
-  if (!this->PreLoadData(ren, vol) || this->AssembledInputs.empty())
-  {
-    return "the volume could not be loaded into a texture";
-  }
   scatterer_render::TransportSource source;
   source.VolumeTexture = this->AssembledInputs.begin()->second.Texture;
-  // VTK 9.1: a partitioned texture loaded (PreLoadData) but not yet drawn throws when it
-  // is loaded again (ClearBlocks reads the sorted block list only drawing fills), as the
-  // ray caster does next on a first frame. Sorting the blocks now, as drawing does first,
-  // makes that reload safe.
-  const auto& parts = source.VolumeTexture->GetPartitions();
-  if (parts[0] * parts[1] * parts[2] > 1 && plan.Parts.empty())
-  {
-    source.VolumeTexture->SortBlocksBackToFront(ren, vol->GetMatrix());
-  }
   if (!plan.Parts.empty())
   {
     for (auto& input : this->AssembledInputs)

@@ -524,6 +524,8 @@ private:
   /** What this frame needs, or why this volume renders as stock ("" if it can be lit). */
   std::string PlanFrame(vtkRenderer* ren, vtkVolume* vol,
     const scatterer_render::IlluminationParameters& parameters, scatterer_render::FramePlan& plan);
+  /** Loads the ray caster's own textures before this frame makes any of its own. */
+  std::string LoadVolume(vtkRenderer* ren, vtkVolume* vol, const scatterer_render::FramePlan& plan);
   /** Rebuilds the light transport volume if its inputs changed (transport mode). */
   std::string UpdateTransport(vtkRenderer* ren, vtkVolume* vol,
     const scatterer_render::IlluminationParameters& parameters,

@@ -453,6 +453,43 @@ TEST(MapperBehaviour, HeadlightShinesFromTheCameraWhetherOrNotTheRendererMovesIt
     << "a headlight never placed by the renderer shines from vtkLight's default place";
 }
 
+TEST(MapperBehaviour, OneVolumeShownInTwoWindowsIsLitInEach)
+{
+  // One volume (one mapper) in two windows, rendered in turn: each frame is the picture
+  // a single window shows. In per-sample mode the frame after each switch of window was
+  // drawn unlit (the template texture made for the new window was released mid-frame,
+  // when the ray caster let the old window go).
+  for (const bool perSample : { true, false })
+  {
+    Scene scene(false, 1);
+    if (perSample)
+    {
+      scene.Mapper->SetIlluminationModeToPerSample();
+    }
+    const auto single = scene.Render();
+    vtkNew<vtkRenderWindow> other;
+    other->SetSize(Window()->GetSize());
+    other->SetMultiSamples(0);
+    vtkNew<vtkRenderer> renderer;
+    renderer->AutomaticLightCreationOff();
+    renderer->AddLight(vtkLight::SafeDownCast(scene.Renderer->GetLights()->GetItemAsObject(0)));
+    renderer->SetActiveCamera(scene.Renderer->GetActiveCamera());
+    renderer->AddVolume(scene.Volume);
+    other->AddRenderer(renderer);
+    int worst = 0;
+    for (int frame = 0; frame < 2; ++frame)
+    {
+      worst = std::max(worst, MaxDifference(scatterer_testing::RenderAndGrab(other), single));
+      worst = std::max(worst, MaxDifference(scene.Render(), single));
+    }
+    EXPECT_LE(worst, 1) << (perSample ? "per-sample" : "transport")
+                        << ": a frame after a switch of window is not the single window's";
+    EXPECT_NE(scene.Mapper->GetLastShaderFeatures().rfind("stock", 0), 0u)
+      << scene.Mapper->GetLastShaderFeatures();
+    scene.Mapper->ReleaseGraphicsResources(other);
+  }
+}
+
 TEST(MapperBehaviour, LightKitLightsTheVolumeWithEveryLight)
 {
   // ParaView's default lighting: vtkLightKit's key, fill and back lights, which follow
