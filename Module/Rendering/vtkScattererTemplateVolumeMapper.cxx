@@ -366,8 +366,8 @@ scatterer_render::IlluminationParameters vtkScattererTemplateVolumeMapper::Gathe
 }
 
 /*
- * GPURender: plan the frame, load the volume, refresh the templates and (transport mode) the light
- * transport volume, then render with the illumination GLSL; any stage that
+ * GPURender: plan the frame, load the volume, refresh the templates and (transport mode)
+ * the light transport volume, then render with the illumination GLSL; any stage that
  * cannot do its part says why and the volume renders as the stock mapper would.
  */
 void vtkScattererTemplateVolumeMapper::GPURender(vtkRenderer* ren, vtkVolume* vol)

@@ -116,9 +116,9 @@ public:
     float VoxelStep[3] = { 0, 0, 0 };           ///< one texel of the volume texture (Transfer2D)
     float GradientAspect[3] = { 1, 1, 1 }; ///< spacing * 2 / mean spacing, per axis (Transfer2D)
     unsigned long VolumeUploadTime = 0;    ///< changes when the texture's content does
-    /// The texture's filter (GL_NEAREST or GL_LINEAR, the property's interpolation type):
-    /// the passes sample the medium through it, and VTK changes it in place, without an
-    /// upload.
+    /// The texture's filter (vtkTextureObject's Nearest or Linear, the property's
+    /// interpolation type): the passes sample the medium through it, and VTK changes it in
+    /// place, without an upload.
     int VolumeFilter = 0;
     /// One input of a vtkMultiVolume, read through its own placement.
     struct Part
