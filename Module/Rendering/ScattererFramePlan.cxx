@@ -142,7 +142,9 @@ std::string PlanComponents(vtkVolumeProperty* property, const VolumeSource& sour
   const int n = plan.Scalars->GetNumberOfComponents();
   plan.Features.Components = Scalars::One;
   plan.MaterialComponent = 0;
-  plan.SampleDistance = source.SampleDistance;
+  // The ray caster's step: with AutoAdjustSampleDistances (VTK's default) the smallest
+  // voxel edge, not SampleDistance. A 2D transfer function's opacity is one step's.
+  plan.SampleDistance = source.StillRayStep > 0.0 ? source.StillRayStep : source.SampleDistance;
   plan.Transfer2D = property->GetTransferFunctionMode() == vtkVolumeProperty::TF_2D;
   if (plan.Transfer2D)
   {
@@ -158,7 +160,7 @@ std::string PlanComponents(vtkVolumeProperty* property, const VolumeSource& sour
     {
       return "a label-map mask with a 2D transfer function";
     }
-    if (!(source.SampleDistance > 0.0) || !std::isfinite(source.SampleDistance))
+    if (!(plan.SampleDistance > 0.0) || !std::isfinite(plan.SampleDistance))
     {
       return "a 2D transfer function with a sample distance that is not positive";
     }

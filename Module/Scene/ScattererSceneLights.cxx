@@ -100,9 +100,11 @@ LightSet CollectLights(vtkRenderer* renderer, vtkVolumeProperty* property)
       set.Ambient[c] += set.AmbientColor.back();
     }
     set.Positional.push_back(light->GetPositional() ? 1 : 0);
-    // VTK lights a positional light's cone only below 90 degrees (as its shaders do).
+    // VTK lights a positional light as a spot up to a cone of 90 degrees, its cone and
+    // exponent applied (vtkVolumeShaderComposer: in_lightConeAngle <= 90), and above as a
+    // point light.
     const double cone = light->GetConeAngle();
-    set.ConeCos.push_back(light->GetPositional() && cone < 90.0
+    set.ConeCos.push_back(light->GetPositional() && cone <= 90.0
         ? static_cast<float>(std::cos(vtkMath::RadiansFromDegrees(cone)))
         : -2.0f);
     set.Exponent.push_back(static_cast<float>(light->GetExponent()));

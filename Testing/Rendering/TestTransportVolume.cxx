@@ -420,6 +420,43 @@ TEST(TransportVolume, Transfer2DOpacityIsPerRayStepAndReadsTheGradient)
   }
 }
 
+// A 2D transfer function's opacity is one step of the ray caster's own: with
+// AutoAdjustSampleDistances (VTK's default) that step is the smallest voxel edge, not
+// SampleDistance. At spacing 0.5 each voxel is one step, so the slab lets through what it
+// lets through at spacing 1; the transport took SampleDistance (1) for the step, and the
+// slab's shadow was the square root of the picture's.
+TEST(TransportVolume, Transfer2DOpacityIsPerStepOfTheRayCastersOwnStep)
+{
+  const int n = 32;
+  const auto transmittanceAt = [n](double spacing)
+  {
+    auto image = MakeVolume(
+      n, spacing, [](int, int, int k) -> unsigned char { return InSlab(k) ? 200 : 0; });
+    TransportScene scene(image, 0.1);
+    scene.Property->SetTransferFunctionMode(vtkVolumeProperty::TF_2D);
+    scene.Property->SetTransferFunction2D(Transfer2D(0.3, 0.0));
+    EXPECT_TRUE(scene.Mapper->GetAutoAdjustSampleDistances());
+    const double c = 0.5 * (n - 1) * spacing;
+    scene.Light->SetPositional(false);
+    scene.Light->SetFocalPoint(c, c, c);
+    scene.Light->SetPosition(c, c, c + 1.0);
+    return scene.Transmittance();
+  };
+  const auto unit = transmittanceAt(1.0), half = transmittanceAt(0.5);
+  ASSERT_EQ(unit.size(), static_cast<size_t>(n * n * n));
+  ASSERT_EQ(half.size(), unit.size());
+  const float below = unit[static_cast<size_t>(16 + n * (16 + n * 2))];
+  std::printf("under the slab: %g at spacing 1, %g at spacing 0.5\n", below,
+    half[static_cast<size_t>(16 + n * (16 + n * 2))]);
+  ASSERT_LT(below, 0.5f) << "the slab casts no shadow: no test";
+  float worst = 0.0f;
+  for (size_t i = 0; i < unit.size(); ++i)
+  {
+    worst = std::max(worst, std::abs(unit[i] - half[i]));
+  }
+  EXPECT_LE(worst, 2e-3f) << "the light is not the ray caster's step's";
+}
+
 TEST(TransportVolume, SlabObliqueLightIsBeerLambert)
 {
   const int n = 40;
@@ -466,6 +503,39 @@ TEST(TransportVolume, SlabPositionalLightIsBeerLambertAlongTheRay)
     const double expected = std::exp(-sigma * inside);
     EXPECT_NEAR(scene.At(t, i, 20, k), expected, 0.01 * expected + 2e-3) << "i = " << i;
   }
+}
+
+// VTK lights a positional light as a spot, cone and exponent applied, up to a cone of 90
+// degrees inclusive (vtkVolumeShaderComposer), so 90 lights as 89.99 does; the transport
+// took 90 as no spot at all (its exponent dropped), found by a sweep of cone angles.
+TEST(TransportVolume, SpotOfNinetyDegreesIsLitAsVtkLightsIt)
+{
+  const int n = 24;
+  auto image = MakeVolume(n, 1.0, Slab(4, 9));
+  const auto lightWithCone = [&image](double cone)
+  {
+    TransportScene scene(image, 0.3);
+    scene.Light->SetPositional(true);
+    scene.Light->SetPosition(11.5, 11.5, 30.0);
+    scene.Light->SetFocalPoint(11.5, 11.5, 0.0);
+    scene.Light->SetConeAngle(cone);
+    scene.Light->SetExponent(8.0);
+    return scene.ReceivedLight();
+  };
+  const auto at90 = lightWithCone(90.0), below = lightWithCone(89.99), point = lightWithCone(180);
+  ASSERT_EQ(at90.size(), below.size());
+  ASSERT_EQ(point.size(), below.size());
+  float largest = 0.0f, worst = 0.0f, spot = 0.0f;
+  for (size_t i = 0; i < below.size(); ++i)
+  {
+    largest = std::max(largest, below[i]);
+    worst = std::max(worst, std::abs(at90[i] - below[i]));
+    spot = std::max(spot, std::abs(point[i] - below[i]));
+  }
+  std::printf("cone 90 against 89.99: largest difference %g (a point light: %g) of %g\n", worst,
+    spot, largest);
+  ASSERT_GT(spot, 0.1f * largest) << "the exponent changes nothing here: no test";
+  EXPECT_LE(worst, 0.01f * largest) << "a cone of 90 degrees is not lit as a spot";
 }
 
 TEST(TransportVolume, SphereShadowFallsWhereGeometryPutsIt)
