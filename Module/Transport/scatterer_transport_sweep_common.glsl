@@ -146,6 +146,55 @@ float st_farFactor(vec3 q, vec3 stepGrid, float len)
   return exp(-0.5 * len * st_farExtinction(q, stepGrid));
 }
 
+// The extinction at grid position g for a path marched through the grid: the texels'
+// means (one read of a one-channel texture), or at TransportScale 1, where no means are
+// held, the volume itself; 0 outside the grid (no matter there).
+float st_extinctionAtGrid(vec3 g)
+{
+  if (any(lessThan(g, vec3(-0.5))) || any(greaterThan(g, st_gridDims - vec3(0.5))))
+  {
+    return 0.0;
+  }
+  if (st_stepSamples == 1)
+  {
+    return st_attenuationAt(st_gridToTexture(g));
+  }
+  return texture(st_fineExtinction, g * st_gridToMeansScale + st_gridToMeansOffset).r;
+}
+
+// The optical depth from texel j's face toward a positional light to the light, toLight
+// the grid vector from j to it: marched straight, one sample a texel,
+//   tau = len / n * sum_i sigma(j + (f + (i + 1/2) (1 - f) / n) toLight)
+// f = 1/2 / max|toLight| (the face), n = ceil((1 - f) max|toLight|) steps of at most a
+// texel, len the world length from the face to the light. For texels whose path to the
+// light no slice before holds (scatterer_transport_sweep.glsl).
+float st_depthToLight(vec3 j, vec3 toLight)
+{
+  float reach = max(max(abs(toLight.x), abs(toLight.y)), abs(toLight.z));
+  if (reach <= 0.5)
+  {
+    return 0.0;
+  }
+  float from = 0.5 / reach;
+  int n = min(int(ceil((1.0 - from) * reach)), 4096);
+  float segment = (1.0 - from) / float(n);
+  float tau = 0.0;
+  for (int i = 0; i < n; ++i)
+  {
+    tau += st_extinctionAtGrid(j + toLight * (from + (float(i) + 0.5) * segment));
+  }
+  return tau * length(st_gridToWorld * toLight) * segment;
+}
+
+// The rest of that path, from texel j's centre to its face (or to the light, if nearer):
+// one sample halfway.
+float st_nearDepthToLight(vec3 j, vec3 toLight)
+{
+  float reach = max(max(abs(toLight.x), abs(toLight.y)), abs(toLight.z));
+  float to = min(0.5 / max(reach, 1.0e-6), 1.0);
+  return st_extinctionAtGrid(j + toLight * (0.5 * to)) * length(st_gridToWorld * toLight) * to;
+}
+
 // A directional light's light entering the texel at grid position j, T(q) exp(-tau_far),
 // from what its lines keep at q: (T, st_farFactor) interpolated between the lines'
 // points. With one extinction sample a step (ST_SWEEP_ONE_SAMPLE: TransportScale 1) the

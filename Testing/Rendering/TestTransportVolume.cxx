@@ -32,6 +32,7 @@
 
 #include <scatterer/Transport.h>
 
+#include <array>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -430,8 +431,8 @@ TEST(TransportVolume, Transfer2DOpacityIsPerStepOfTheRayCastersOwnStep)
   const int n = 32;
   const auto transmittanceAt = [n](double spacing)
   {
-    auto image = MakeVolume(
-      n, spacing, [](int, int, int k) -> unsigned char { return InSlab(k) ? 200 : 0; });
+    auto image =
+      MakeVolume(n, spacing, [](int, int, int k) -> unsigned char { return InSlab(k) ? 200 : 0; });
     TransportScene scene(image, 0.1);
     scene.Property->SetTransferFunctionMode(vtkVolumeProperty::TF_2D);
     scene.Property->SetTransferFunction2D(Transfer2D(0.3, 0.0));
@@ -503,6 +504,50 @@ TEST(TransportVolume, SlabPositionalLightIsBeerLambertAlongTheRay)
     const double expected = std::exp(-sigma * inside);
     EXPECT_NEAR(scene.At(t, i, 20, k), expected, 0.01 * expected + 2e-3) << "i = " << i;
   }
+}
+
+// A point light inside a homogeneous medium: the light entering a texel has crossed the
+// medium from the light to the texel's face toward it, T = exp(-sigma r). The radial
+// sweep starts beside the light's own slice, where no slice before holds the path: those
+// texels (and those whose path runs more than 4 texels sideways a slice) are marched to
+// the light. They were taken as T = 1 (until 2026-12-07): the light's own slices were lit
+// through any matter, a bright band through a ball around the light.
+TEST(TransportVolume, PointLightInsideAMediumIsBeerLambertAlongTheRay)
+{
+  const int n = 32;
+  auto image = MakeVolume(n, 1.0, [](int, int, int) -> unsigned char { return 200; });
+  TransportScene scene(image, 0.05);
+  const double light[3] = { 15.5, 15.5, 20.0 }; // in slice z = 20, the sweep along z
+  scene.Light->SetPositional(true);
+  scene.Light->SetConeAngle(180.0);
+  scene.Light->SetPosition(light);
+  scene.Light->SetFocalPoint(15.5, 15.5, 0.0);
+  const auto t = scene.Transmittance();
+  ASSERT_EQ(t.size(), static_cast<size_t>(n * n * n));
+  const double sigma = -std::log(1.0 - 0.05);
+  double worst = 0.0;
+  // The light's own slice and the one beside it (first slices of the two runs), texels
+  // whose path runs sideways (capped), and texels the sweep carries (below the light).
+  for (const std::array<int, 3>& texel :
+    std::vector<std::array<int, 3>>{ { 5, 15, 20 }, { 28, 15, 20 }, { 15, 2, 21 }, { 25, 25, 20 },
+      { 4, 15, 19 }, { 28, 20, 18 }, { 15, 15, 8 }, { 22, 12, 4 } })
+  {
+    double d[3], reach = 0.0;
+    for (int a = 0; a < 3; ++a)
+    {
+      d[a] = light[a] - texel[a];
+      reach = std::max(reach, std::abs(d[a]));
+    }
+    // From the texel's face toward the light (half a texel along the path's largest
+    // component) to the light.
+    const double r = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) * (1.0 - 0.5 / reach);
+    const double expected = std::exp(-sigma * r);
+    const double got = scene.At(t, texel[0], texel[1], texel[2]);
+    std::printf(
+      "texel (%d, %d, %d): %.4f, expected %.4f\n", texel[0], texel[1], texel[2], got, expected);
+    worst = std::max(worst, std::abs(got - expected) / expected);
+  }
+  EXPECT_LT(worst, 0.03) << "the light entering a texel is not Beer-Lambert from the light";
 }
 
 // VTK lights a positional light as a spot, cone and exponent applied, up to a cone of 90
