@@ -572,7 +572,10 @@ std::string FramePlanner::PlanFeatures(vtkVolume* vol, const VolumeSource& sourc
       il::lightReadStride(
         source.StillRayStep, parameters.TransportScaleFor(dims, false) * source.VoxelSize));
   }
-  if (automatic && !f.Shadow && !f.Bleed && !f.Boundary)
+  // Multiple scattering is an effect of its own: with shadows off the transport volume
+  // still carries it (the light unattenuated, scattered as the medium scatters it).
+  const bool multipleScattering = f.Transport && parameters.MultipleScattering > 0.0;
+  if (automatic && !f.Shadow && !f.Bleed && !f.Boundary && !multipleScattering)
   {
     return "no illumination effect is switched on";
   }

@@ -1,7 +1,10 @@
 #include "vtkScattererVolumeRepresentation.h"
 
+#include "vtkAbstractMapper.h"
 #include "vtkCellData.h"
+#include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
+#include "vtkDataArray.h"
 #include "vtkDataObject.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkImageData.h"
@@ -15,6 +18,7 @@
 #include "vtkRenderer.h"
 #include "vtkPointData.h"
 #include "vtkRenderWindow.h"
+#include "vtkScalarsToColors.h"
 #include "vtkScattererLightExchange.h"
 #include "vtkScattererTemplateVolumeMapper.h"
 #include "vtkScattererTransportVolume.h"
@@ -24,6 +28,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <iterator>
 
 vtkStandardNewMacro(vtkScattererVolumeRepresentation);
@@ -108,8 +113,10 @@ void vtkScattererVolumeRepresentation::ExchangeLight(vtkObject*, unsigned long, 
   {
     return;
   }
-  vtkImageData* piece =
-    this->RendersOwnedPartOnly ? vtkImageData::SafeDownCast(this->Cache) : nullptr;
+  // What the mapper renders (the cache, or its array's component or magnitude).
+  vtkImageData* piece = this->RendersOwnedPartOnly
+    ? vtkImageData::SafeDownCast(this->VolumeMapper->GetInputDataObject(0, 0))
+    : nullptr;
   // While the user drags, coarser maps, as the transport volume is then coarser too.
   vtkRenderWindow* window = renderView->GetRenderWindow();
   this->LightExchange->SetInteractive(
@@ -309,11 +316,89 @@ int vtkScattererVolumeRepresentation::RequestData(
   return 1;
 }
 
+/*
+ * ParaView colours a multi-component array whose components are mapped independently
+ * (MapScalars on, MultiComponentsMapping off) by one component or by its magnitude, as
+ * its lookup table's vector mode says; its Volume hands that to vtkSmartVolumeMapper
+ * (vtkImageVolumeRepresentation::UpdateMapperParameters), which this representation's
+ * mapper is not: the raw components rendered as independent ones, whatever component
+ * the user chose. The mapper gets the image with that array as the chosen component, or
+ * the magnitude, alone, under its own name; remade only when the data or the choice
+ * changes.
+ */
+void vtkScattererVolumeRepresentation::UpdateMapperInput()
+{
+  auto* image = vtkImageData::SafeDownCast(this->Cache);
+  vtkVolumeMapper* mapper = this->VolumeMapper;
+  vtkColorTransferFunction* colors =
+    this->Property ? this->Property->GetRGBTransferFunction(0) : nullptr;
+  int cellFlag = 0;
+  vtkDataArray* array = image && colors && this->Property->GetIndependentComponents()
+    ? vtkAbstractMapper::GetScalars(image, mapper->GetScalarMode(), mapper->GetArrayAccessMode(),
+        mapper->GetArrayId(), mapper->GetArrayName(), cellFlag)
+    : nullptr;
+  const int components = array ? array->GetNumberOfComponents() : 0;
+  if (components < 2 || !array->GetName())
+  {
+    this->VectorInput = nullptr;
+    this->VectorInputKey.clear();
+    if (mapper->GetInputDataObject(0, 0) != this->Cache)
+    {
+      mapper->SetInputDataObject(this->Cache);
+    }
+    return;
+  }
+  const bool magnitude = colors->GetVectorMode() == vtkScalarsToColors::MAGNITUDE;
+  const int component = std::min(std::max(colors->GetVectorComponent(), 0), components - 1);
+  const std::string key = std::to_string(reinterpret_cast<std::uintptr_t>(image)) + '|' +
+    std::to_string(image->GetMTime()) + '|' + std::to_string(array->GetMTime()) + '|' +
+    array->GetName() + '|' + std::to_string(cellFlag) + '|' +
+    (magnitude ? std::string("magnitude") : std::to_string(component));
+  if (key != this->VectorInputKey)
+  {
+    vtkSmartPointer<vtkDataArray> one;
+    one.TakeReference(magnitude ? vtkDataArray::CreateDataArray(VTK_FLOAT) : array->NewInstance());
+    one->SetName(array->GetName());
+    one->SetNumberOfComponents(1);
+    one->SetNumberOfTuples(array->GetNumberOfTuples());
+    for (vtkIdType t = 0; t < array->GetNumberOfTuples(); ++t)
+    {
+      if (magnitude)
+      {
+        double squared = 0.0;
+        for (int c = 0; c < components; ++c)
+        {
+          const double v = array->GetComponent(t, c);
+          squared += v * v;
+        }
+        one->SetTuple1(t, std::sqrt(squared));
+      }
+      else
+      {
+        one->SetTuple1(t, array->GetComponent(t, component));
+      }
+    }
+    this->VectorInput = vtkSmartPointer<vtkImageData>::New();
+    this->VectorInput->ShallowCopy(image);
+    vtkDataSetAttributes* attributes = cellFlag
+      ? static_cast<vtkDataSetAttributes*>(this->VectorInput->GetCellData())
+      : static_cast<vtkDataSetAttributes*>(this->VectorInput->GetPointData());
+    attributes->RemoveArray(array->GetName());
+    attributes->AddArray(one);
+    this->VectorInputKey = key;
+  }
+  if (mapper->GetInputDataObject(0, 0) != this->VectorInput)
+  {
+    mapper->SetInputDataObject(this->VectorInput);
+  }
+}
+
 void vtkScattererVolumeRepresentation::UpdateMapperParameters()
 {
   // The superclass sets the user's cropping planes when cropping is on.
   this->VolumeMapper->SetCropping(this->UserCropping);
   this->Superclass::UpdateMapperParameters();
+  this->UpdateMapperInput();
   // Coarser sampling while dragging, as "Volume" does (see the class comment). Called
   // for every render (REQUEST_RENDER), after the view set the window's update rate.
   auto* view = vtkPVView::SafeDownCast(this->GetView());

@@ -40,8 +40,12 @@
 
 #include "ScattererParaViewRepresentationModule.h" // for export macro
 #include "vtkImageVolumeRepresentation.h"
-#include "vtkNew.h" // for LightExchange
+#include "vtkNew.h"          // for LightExchange
+#include "vtkSmartPointer.h" // for VectorInput
 
+#include <string> // for VectorInputKey
+
+class vtkImageData;
 class vtkScattererLightExchange;
 class vtkScattererTemplateVolumeMapper;
 
@@ -146,6 +150,13 @@ private:
   /** Before each frame renders, on every rank: the light exchange between the pieces. */
   void ExchangeLight(vtkObject* caller, unsigned long event, void* callData);
 
+  /**
+   * The image the mapper renders: the cache, or, where ParaView colours a multi-component
+   * array by one component or by its magnitude, one with that array as that component
+   * or magnitude alone.
+   */
+  void UpdateMapperInput();
+
   /** The mapper's ProgressEvent, re-sent as this representation's. */
   void ForwardMapperProgress(vtkObject* caller, unsigned long event, void* callData);
 
@@ -165,6 +176,8 @@ private:
   unsigned long ExchangeObserver = 0;
   double LightExchangeInfo[4] = { 0, 0, 0, 0 };
   double IlluminationBuildInfo[8] = { 0, 0, 0, 0, 0, 0, 0, 0 };
+  vtkSmartPointer<vtkImageData> VectorInput; // the cache with its array's component or magnitude
+  std::string VectorInputKey;                // what VectorInput was made from
 };
 
 #endif
