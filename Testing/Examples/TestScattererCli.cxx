@@ -576,8 +576,7 @@ TEST_F(Cli, ViewerFailsOnAVtkErrorWhenWritingTheFrame)
 }
 
 // "--test --size 600x600" used to render at 300x300 without a word. The recording is
-// one rotation drag: the built-in one switches shadows off, which leaves a one-material
-// ball with no effect at all (stock), and --test would fail for that.
+// one rotation drag, quicker than the built-in one.
 TEST_F(Cli, ViewerTestModeKeepsAnExplicitSize)
 {
   const std::string input = this->WriteMetaImage("ball", Ball());

@@ -28,6 +28,7 @@
 #include "vtkRendererCollection.h"
 #include "vtkRenderer.h"
 #include "vtkScattererTemplateVolumeMapper.h"
+#include "vtkScattererTransportVolume.h"
 #include "vtkShader.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkLightCollection.h"
@@ -260,11 +261,40 @@ TEST(MapperBehaviour, UniformOnlyChangesDoNotRebuildTheShader)
     scene.Mapper->SetTemplateRadius(3.0);
     scene.Render();
     EXPECT_EQ(reused.Count, 2) << "a uniform-only change rebuilt the shader (mode " << mode << ")";
+    // Shadows off: the photon test's code goes (per-sample); the transport volume is
+    // rebuilt without attenuation and read by the same code (transport).
+    const int builds = scene.Mapper->GetTransportVolume()->GetBuildCount();
     scene.Mapper->ShadowsEnabledOff();
     scene.Render();
-    EXPECT_EQ(reused.Count, 2) << "switching an effect off must change the shader (mode " << mode
-                               << ")";
+    if (mode == vtkScattererTemplateVolumeMapper::PER_SAMPLE)
+    {
+      EXPECT_EQ(reused.Count, 2) << "switching the photon test's shadows off must change the shader";
+    }
+    else
+    {
+      EXPECT_EQ(reused.Count, 3) << "switching the transport's shadows off rebuilt the shader";
+      EXPECT_EQ(scene.Mapper->GetTransportVolume()->GetBuildCount(), builds + 1)
+        << "switching the transport's shadows off did not rebuild its light";
+    }
   }
+}
+
+TEST(MapperBehaviour, ShadowsOffKeepTheMultipleScattering)
+{
+  // One material (no bleeding or boundary code): with shadows off the transport volume
+  // still carries the light scattered in the medium, an effect of its own; with that
+  // off too there is none, and the volume renders as stock. Shadows off used to mean
+  // stock whatever the multiple scattering (the viewer's 's' key turned all lighting off).
+  Scene scene;
+  scene.Mapper->ShadowsEnabledOff();
+  const auto scattered = scene.Render();
+  const std::string features = scene.Mapper->GetLastShaderFeatures();
+  EXPECT_EQ(features.rfind("transport", 0), 0u) << features;
+  scene.Mapper->SetMultipleScattering(0.0);
+  const auto none = scene.Render();
+  EXPECT_EQ(scene.Mapper->GetLastShaderFeatures(), "stock: no illumination effect is switched on");
+  EXPECT_EQ(MaxDifference(none, scene.RenderStock()), 0);
+  EXPECT_GT(MaxDifference(scattered, none), 20) << "the multiple scattering shows nothing";
 }
 
 TEST(MapperBehaviour, VolumeGivenToAnotherMapperKeepsNoLeftovers)
