@@ -215,7 +215,7 @@ public:
    * light must match). Default 0 0 0: the input is the whole volume.
    */
   void SetWholeDimensions(int nx, int ny, int nz);
-  const int* GetWholeDimensions() const { return this->WholeDimensions; }
+  const int* GetWholeDimensions() const VTK_SIZEHINT(3) { return this->WholeDimensions; }
   ///@}
 
   /**

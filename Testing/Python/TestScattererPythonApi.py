@@ -102,6 +102,14 @@ check(tuple(m.GetMaterialDerivationRange()) == (1.0, 0.0), "unset derivation ran
 m.SetMaterialDerivationRange(2.0, 5.0)
 check(tuple(m.GetMaterialDerivationRange()) == (2.0, 5.0), "derivation range round-trip")
 m.ClearMaterialDerivationRange()
+# Three numbers too (they were an opaque pointer in Python).
+m.SetWholeDimensions(4, 5, 6)
+check(tuple(m.GetWholeDimensions()) == (4, 5, 6), "whole dimensions round-trip")
+m.SetWholeDimensions(0, 0, 0)
+# The mapper's light transport volume, a class of the package (it was reachable only
+# through scatterertemplate.ScattererTemplate).
+check(isinstance(m.GetTransportVolume(), scatterertemplate.vtkScattererTransportVolume),
+      "GetTransportVolume() is a scatterertemplate.vtkScattererTransportVolume")
 m.SetIlluminationModeToTransport()
 check(m.GetIlluminationMode() == m.TRANSPORT, "SetIlluminationModeToTransport")
 m.SetIlluminationModeToPerSample()

@@ -5,7 +5,9 @@
 
 Classes: vtkScattererTemplateVolumeMapper, vtkScattererTemplateSource,
 vtkScattererMaterial, vtkScattererVolumeReader, vtkScattererTemplateVersion
-(``__version__``). Rendering needs VTK's OpenGL
+(``__version__``), and the mapper's parts vtkScattererTransportVolume (its light
+transport volume, GetTransportVolume) and vtkScattererLightExchange (a distributed
+volume's light exchange). Rendering needs VTK's OpenGL
 factories, so import ``vtkmodules.vtkRenderingOpenGL2`` and
 ``vtkmodules.vtkRenderingVolumeOpenGL2`` (done here) before making a render window.
 """
@@ -15,10 +17,12 @@ import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 import vtkmodules.vtkRenderingVolumeOpenGL2  # noqa: F401
 
 from .ScattererTemplate import (  # noqa: F401
+    vtkScattererLightExchange,
     vtkScattererMaterial,
     vtkScattererTemplateSource,
     vtkScattererTemplateVersion,
     vtkScattererTemplateVolumeMapper,
+    vtkScattererTransportVolume,
     vtkScattererVolumeReader,
 )
 
@@ -26,9 +30,11 @@ from .ScattererTemplate import (  # noqa: F401
 __version__ = vtkScattererTemplateVersion.GetVersion()
 
 __all__ = [
+    "vtkScattererLightExchange",
     "vtkScattererMaterial",
     "vtkScattererTemplateSource",
     "vtkScattererTemplateVersion",
     "vtkScattererTemplateVolumeMapper",
+    "vtkScattererTransportVolume",
     "vtkScattererVolumeReader",
 ]
