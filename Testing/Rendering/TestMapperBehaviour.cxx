@@ -268,7 +268,8 @@ TEST(MapperBehaviour, UniformOnlyChangesDoNotRebuildTheShader)
     scene.Render();
     if (mode == vtkScattererTemplateVolumeMapper::PER_SAMPLE)
     {
-      EXPECT_EQ(reused.Count, 2) << "switching the photon test's shadows off must change the shader";
+      EXPECT_EQ(reused.Count, 2)
+        << "switching the photon test's shadows off must change the shader";
     }
     else
     {
