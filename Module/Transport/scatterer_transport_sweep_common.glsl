@@ -164,10 +164,11 @@ float st_extinctionAtGrid(vec3 g)
 
 // The optical depth from texel j's face toward a positional light to the light, toLight
 // the grid vector from j to it: marched straight, one sample a texel,
-//   tau = len / n * sum_i sigma(j + (f + (i + 1/2) (1 - f) / n) toLight)
-// f = 1/2 / max|toLight| (the face), n = ceil((1 - f) max|toLight|) steps of at most a
-// texel, len the world length from the face to the light. For texels whose path to the
-// light no slice before holds (scatterer_transport_sweep.glsl).
+//   tau = len / n * sum_i sigma(j + (f + (i + 1/2) (e - f) / n) toLight)
+// f = 1/2 / max|toLight| (the face), e the fraction of the way at which the path leaves
+// the grid (1 if the light is inside: beyond the grid there is no matter), n =
+// ceil((e - f) max|toLight|) steps of at most a texel, len the world length of toLight.
+// For texels whose path to the light no slice before holds (scatterer_transport_sweep.glsl).
 float st_depthToLight(vec3 j, vec3 toLight)
 {
   float reach = max(max(abs(toLight.x), abs(toLight.y)), abs(toLight.z));
@@ -176,8 +177,21 @@ float st_depthToLight(vec3 j, vec3 toLight)
     return 0.0;
   }
   float from = 0.5 / reach;
-  int n = min(int(ceil((1.0 - from) * reach)), 4096);
-  float segment = (1.0 - from) / float(n);
+  float end = 1.0;
+  for (int a = 0; a < 3; ++a)
+  {
+    if (abs(toLight[a]) > 1.0e-6)
+    {
+      float bound = toLight[a] > 0.0 ? st_gridDims[a] - 0.5 : -0.5;
+      end = min(end, (bound - j[a]) / toLight[a]);
+    }
+  }
+  if (end <= from)
+  {
+    return 0.0;
+  }
+  int n = min(int(ceil((end - from) * reach)), 4096);
+  float segment = (end - from) / float(n);
   float tau = 0.0;
   for (int i = 0; i < n; ++i)
   {
