@@ -157,13 +157,16 @@ def open_volume(mhd_path):
 
 def make_view(size, scene=CT_HEAD_SCENE):
     """Render view with a black background and the scene's one light (directional,
-    or positional without cone when the scene says so)."""
+    or positional without cone when the scene says so); scene None: ParaView's own
+    lights (the light kit)."""
     view = CreateView("RenderView")
     SetActiveView(view)
     view.ViewSize = list(size)
     view.OrientationAxesVisibility = 0
     view.UseColorPaletteForBackground = 0
     view.Background = [0.0, 0.0, 0.0]
+    if scene is None:
+        return view
     view.UseLight = 0  # no light kit: the scene's single directional light only
     light = AddLight(view=view)
     light.Coords = "Scene"

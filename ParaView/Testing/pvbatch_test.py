@@ -344,18 +344,13 @@ def vector_component_one_rank(args):
     vector mode), as ParaView's Volume renders it: the mapper gets that component or the
     magnitude alone. It rendered the raw components as independent ones, the same
     picture whatever the user chose."""
-    from paraview.simple import (Calculator, ColorBy, CreateView, GetColorTransferFunction,
-                                 GetOpacityTransferFunction, SetActiveView, Show, Wavelet)
+    from paraview.simple import (Calculator, ColorBy, GetColorTransferFunction,
+                                 GetOpacityTransferFunction, Show, Wavelet)
     wavelet = Wavelet()
     vectors = Calculator(Input=wavelet)
     vectors.ResultArrayName = "V"
     vectors.Function = "RTData*iHat + (314-RTData)*jHat + 100*kHat"
-    view = CreateView("RenderView")
-    SetActiveView(view)
-    view.ViewSize = list(SIZE)
-    view.OrientationAxesVisibility = 0
-    view.UseColorPaletteForBackground = 0
-    view.Background = [0.0, 0.0, 0.0]
+    view = scenes.make_view(SIZE, None)
     pictures = {}
     for representation in ("Volume", "Scatterer Volume"):
         for part in ("X", "Y", "Magnitude"):

@@ -40,6 +40,7 @@
 #include <numeric>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace
@@ -506,6 +507,21 @@ TEST(TransportVolume, SlabPositionalLightIsBeerLambertAlongTheRay)
   }
 }
 
+// The largest value of `reference` and the largest difference of `other` from it (the
+// same size, or the test fails).
+std::pair<float, float> LargestAndWorst(
+  const std::vector<float>& reference, const std::vector<float>& other)
+{
+  EXPECT_EQ(reference.size(), other.size());
+  float largest = 0.0f, worst = 0.0f;
+  for (size_t i = 0; i < reference.size() && i < other.size(); ++i)
+  {
+    largest = std::max(largest, reference[i]);
+    worst = std::max(worst, std::abs(other[i] - reference[i]));
+  }
+  return { largest, worst };
+}
+
 // A point light inside a homogeneous medium: the light entering a texel has crossed the
 // medium from the light to the texel's face toward it, T = exp(-sigma r). The radial
 // sweep starts beside the light's own slice, where no slice before holds the path: those
@@ -568,15 +584,8 @@ TEST(TransportVolume, SpotOfNinetyDegreesIsLitAsVtkLightsIt)
     return scene.ReceivedLight();
   };
   const auto at90 = lightWithCone(90.0), below = lightWithCone(89.99), point = lightWithCone(180);
-  ASSERT_EQ(at90.size(), below.size());
-  ASSERT_EQ(point.size(), below.size());
-  float largest = 0.0f, worst = 0.0f, spot = 0.0f;
-  for (size_t i = 0; i < below.size(); ++i)
-  {
-    largest = std::max(largest, below[i]);
-    worst = std::max(worst, std::abs(at90[i] - below[i]));
-    spot = std::max(spot, std::abs(point[i] - below[i]));
-  }
+  const auto [largest, worst] = LargestAndWorst(below, at90);
+  const float spot = LargestAndWorst(below, point).second;
   std::printf("cone 90 against 89.99: largest difference %g (a point light: %g) of %g\n", worst,
     spot, largest);
   ASSERT_GT(spot, 0.1f * largest) << "the exponent changes nothing here: no test";
@@ -1026,15 +1035,8 @@ TEST(TransportVolume, InterpolationChangeLightsAsAFirstBuildDoes)
   TransportScene fresh(MakeVolume(24, 1.0, Slab(8, 15)), 0.3);
   edit(fresh);
   const std::vector<float> expected = fresh.ReceivedLight();
-  ASSERT_EQ(edited.size(), expected.size());
-  ASSERT_EQ(before.size(), expected.size());
-  float largest = 0.0f, worst = 0.0f, change = 0.0f;
-  for (size_t i = 0; i < edited.size(); ++i)
-  {
-    largest = std::max(largest, expected[i]);
-    worst = std::max(worst, std::abs(edited[i] - expected[i]));
-    change = std::max(change, std::abs(before[i] - expected[i]));
-  }
+  const auto [largest, worst] = LargestAndWorst(expected, edited);
+  const float change = LargestAndWorst(expected, before).second;
   std::printf("after the change vs a first build: largest difference %g (nearest against "
               "linear: %g) of %g\n",
     worst, change, largest);
