@@ -1,5 +1,6 @@
 #include "vtkScattererVolumeRepresentation.h"
 
+#include "ScattererChangeKey.h"
 #include "vtkAbstractMapper.h"
 #include "vtkCellData.h"
 #include "vtkColorTransferFunction.h"
@@ -28,7 +29,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <iterator>
 
 vtkStandardNewMacro(vtkScattererVolumeRepresentation);
@@ -58,6 +58,7 @@ double PointDataCroppingPlane(double x, double x0, double s, int n)
 }
 
 vtkScattererVolumeRepresentation::vtkScattererVolumeRepresentation()
+  : VectorInputKey(new scatterer_render::ChangeKey)
 {
   auto mapper = vtkSmartPointer<vtkScattererTemplateVolumeMapper>::New();
   // As ParaView's own image volume mapper renders still frames (vtkMultiBlockVolume-
@@ -341,7 +342,7 @@ void vtkScattererVolumeRepresentation::UpdateMapperInput()
   if (components < 2 || !array->GetName())
   {
     this->VectorInput = nullptr;
-    this->VectorInputKey.clear();
+    this->VectorInputKey->Clear();
     if (mapper->GetInputDataObject(0, 0) != this->Cache)
     {
       mapper->SetInputDataObject(this->Cache);
@@ -350,11 +351,11 @@ void vtkScattererVolumeRepresentation::UpdateMapperInput()
   }
   const bool magnitude = colors->GetVectorMode() == vtkScalarsToColors::MAGNITUDE;
   const int component = std::min(std::max(colors->GetVectorComponent(), 0), components - 1);
-  const std::string key = std::to_string(reinterpret_cast<std::uintptr_t>(image)) + '|' +
-    std::to_string(image->GetMTime()) + '|' + std::to_string(array->GetMTime()) + '|' +
-    array->GetName() + '|' + std::to_string(cellFlag) + '|' +
-    (magnitude ? std::string("magnitude") : std::to_string(component));
-  if (key != this->VectorInputKey)
+  scatterer_render::KeyWriter writer;
+  writer << static_cast<const void*>(image) << '|' << image->GetMTime() << '|' << array->GetMTime()
+         << '|' << array->GetName() << '|' << cellFlag << '|' << (magnitude ? -1 : component);
+  const std::string key = writer.Key();
+  if (this->VectorInputKey->Differs(key))
   {
     vtkSmartPointer<vtkDataArray> one;
     one.TakeReference(magnitude ? vtkDataArray::CreateDataArray(VTK_FLOAT) : array->NewInstance());
@@ -385,7 +386,7 @@ void vtkScattererVolumeRepresentation::UpdateMapperInput()
       : static_cast<vtkDataSetAttributes*>(this->VectorInput->GetPointData());
     attributes->RemoveArray(array->GetName());
     attributes->AddArray(one);
-    this->VectorInputKey = key;
+    this->VectorInputKey->Record(key);
   }
   if (mapper->GetInputDataObject(0, 0) != this->VectorInput)
   {

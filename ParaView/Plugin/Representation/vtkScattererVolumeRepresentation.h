@@ -43,9 +43,13 @@
 #include "vtkNew.h"          // for LightExchange
 #include "vtkSmartPointer.h" // for VectorInput
 
-#include <string> // for VectorInputKey
+#include <memory> // for VectorInputKey
 
 class vtkImageData;
+namespace scatterer_render
+{
+class ChangeKey;
+}
 class vtkScattererLightExchange;
 class vtkScattererTemplateVolumeMapper;
 
@@ -177,7 +181,8 @@ private:
   double LightExchangeInfo[4] = { 0, 0, 0, 0 };
   double IlluminationBuildInfo[8] = { 0, 0, 0, 0, 0, 0, 0, 0 };
   vtkSmartPointer<vtkImageData> VectorInput; // the cache with its array's component or magnitude
-  std::string VectorInputKey;                // what VectorInput was made from
+  // what VectorInput was made from (a scatterer_render::ChangeKey, a private header)
+  std::unique_ptr<scatterer_render::ChangeKey> VectorInputKey;
 };
 
 #endif
