@@ -917,6 +917,67 @@ TEST(TransportVolume, RebuiltOnlyWhenWhatItDependsOnChanges)
   EXPECT_EQ(transport->GetBuildCount(), first + 2) << "a light move was not seen";
 }
 
+// What a move changes: a directional light is its direction (VTK's headlight moves
+// its position with the camera: zooming or panning under it must not rebuild), and a
+// volume moved carries its medium and light along, unless a clipping plane stays in the
+// world or a positional light does.
+TEST(TransportVolume, MovesRebuildOnlyWhatTheyChange)
+{
+  SlabInWindow slab;
+  TransportScene& scene = slab.Scene;
+  vtkRenderWindow* window = slab.Window;
+  vtkScattererTransportVolume* transport = slab.Transport;
+  const int first = transport->GetBuildCount();
+  const int firstMedium = transport->GetMediumBuildCount();
+  const auto render = [&]() { window->Render(); };
+  const auto light = [&]()
+  { return transport->ReadLight(vtkOpenGLRenderWindow::SafeDownCast(window)); };
+
+  // The light's position and focal point moved together, as a headlight's when the
+  // camera dollies or pans: the same direction.
+  double position[3], focal[3];
+  scene.Light->GetPosition(position);
+  scene.Light->GetFocalPoint(focal);
+  scene.Light->SetPosition(position[0] + 3, position[1] - 2, position[2] + 5);
+  scene.Light->SetFocalPoint(focal[0] + 3, focal[1] - 2, focal[2] + 5);
+  render();
+  EXPECT_EQ(transport->GetBuildCount(), first) << "a directional light's position rebuilt it";
+
+  // The volume moved under a directional light, no clipping: nothing to rebuild.
+  const std::vector<float> before = light();
+  scene.Volume->SetPosition(7, -3, 2);
+  render();
+  EXPECT_EQ(transport->GetBuildCount(), first) << "a volume moved rebuilt its light";
+  EXPECT_EQ(transport->GetMediumBuildCount(), firstMedium) << "a volume moved drew its medium";
+  EXPECT_EQ(light(), before);
+
+  // A clipping plane stays in the world: a move cuts the volume elsewhere.
+  const double c = 0.5 * (scene.N - 1);
+  vtkNew<vtkPlane> plane;
+  plane->SetOrigin(c + 7, c - 3, c + 2);
+  plane->SetNormal(-1, 0, 0);
+  scene.Mapper->AddClippingPlane(plane);
+  render();
+  const int clipped = transport->GetMediumBuildCount();
+  EXPECT_EQ(clipped, firstMedium + 1) << "a clipping plane added was not seen";
+  scene.Volume->SetPosition(4, -3, 2);
+  render();
+  EXPECT_EQ(transport->GetMediumBuildCount(), clipped + 1)
+    << "a volume moved under a clipping plane kept its old cut";
+  scene.Mapper->RemoveAllClippingPlanes();
+
+  // A positional light stays in the world: a move lights the volume from elsewhere.
+  scene.Light->SetPositional(true);
+  scene.Light->SetConeAngle(180);
+  render();
+  const int positional = transport->GetBuildCount();
+  scene.Volume->SetPosition(4, 0, 2);
+  render();
+  EXPECT_EQ(transport->GetBuildCount(), positional + 1)
+    << "a volume moved under a positional light kept its old light";
+  EXPECT_EQ(transport->GetMediumBuildCount(), clipped + 2) << "the clipping plane's removal";
+}
+
 // The stages of a build (benchmarks report them: scatterer-bench-render's build_*_ms
 // columns) are the parts of its time: the medium's passes only when the medium changed,
 // the arriving light only for lights besides the direct one, and nothing for a frame
