@@ -143,7 +143,9 @@ std::string TransportUpdate::Update(vtkRenderer* ren, vtkVolume* vol, const Fram
   t.Boundary = plan.Features.Boundary;
   t.MultipleScattering = static_cast<float>(parameters.MultipleScattering);
 
-  // Interactive frames (a time budget under a second) build the volume coarser, but
+  // Interactive frames (the renderer's time budget under a second: 1 / the window's
+  // DesiredUpdateRate, as VTK's interactor sets it while the user drags; not the
+  // volume's share of it, which other props in view shrink) build the volume coarser, but
   // only when it must be rebuilt at all: while the user orbits under a scene light,
   // the still frames' volume stays valid, and a coarse one would cost a build now and
   // another when the user lets go.
@@ -152,7 +154,7 @@ std::string TransportUpdate::Update(vtkRenderer* ren, vtkVolume* vol, const Fram
   t.GetGridSourceDims(gridDims);
   t.Downsample = parameters.TransportScaleFor(gridDims, false);
   t.StillDownsample = t.Downsample; // the diffusion's grid, also on interactive frames
-  const bool interactive = vol->GetAllocatedRenderTime() < 1.0;
+  const bool interactive = ren->GetAllocatedRenderTime() < 1.0;
   if (interactive && !this->Transport->IsCurrent(renWin, t))
   {
     t.Downsample = parameters.TransportScaleFor(gridDims, true);

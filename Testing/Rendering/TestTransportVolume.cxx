@@ -10,6 +10,7 @@
 #include "ScattererTransportTextures.h"
 #include "ScattererTransportTiles.h"
 
+#include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkImageData.h"
@@ -19,11 +20,13 @@
 #include "vtkPiecewiseFunction.h"
 #include "vtkPlane.h"
 #include "vtkPointData.h"
+#include "vtkPolyDataMapper.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkScattererTemplateVolumeMapper.h"
 #include "vtkScattererTransportVolume.h"
 #include "vtkSmartPointer.h"
+#include "vtkSphereSource.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
@@ -1189,6 +1192,44 @@ TEST(TransportVolume, InteractiveFramesKeepTheStillVolumeUnlessTheyMustRebuild)
   EXPECT_EQ(transport->GetBuildCount(), first + 2) << "the still frame kept the coarse volume";
   transport->GetDimensions(dims);
   EXPECT_EQ(dims[0], stillDims);
+  window->RemoveRenderer(scene.Renderer);
+}
+
+// A still frame is the renderer's budget, not the volume's share of it: with other
+// props in view the volume gets a fraction of the frame's time (vtkRenderer::
+// AllocateTime), and a still frame must not be built at the dragging scale for that.
+TEST(TransportVolume, StillFrameWithOtherPropsInViewIsBuiltAtTheStillScale)
+{
+  vtkSmartPointer<vtkImageData> image = MakeVolume(24, 1.0, Slab(8, 15));
+  TransportScene scene(image, 0.3);
+  scene.SetDirectional(0, 0, 1);
+  scene.Mapper->SetTransportScale(1);
+  scene.Mapper->SetInteractiveTransportScale(4);
+  std::vector<vtkSmartPointer<vtkActor>> others;
+  // Four balls as large as the volume around it: VTK shares the frame's time by the
+  // props' coverage of the screen.
+  for (int i = 0; i < 4; ++i)
+  {
+    vtkNew<vtkSphereSource> sphere;
+    sphere->SetCenter(i % 2 ? 11.5 : 11.5 + (i ? 30.0 : -30.0),
+      i % 2 ? 11.5 + (i == 1 ? 30.0 : -30.0) : 11.5, 11.5);
+    sphere->SetRadius(14.0);
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputConnection(sphere->GetOutputPort());
+    others.push_back(vtkSmartPointer<vtkActor>::New());
+    others.back()->SetMapper(mapper);
+    scene.Renderer->AddActor(others.back());
+  }
+  scene.Renderer->ResetCamera();
+  vtkRenderWindow* window = scatterer_testing::SharedWindow();
+  window->AddRenderer(scene.Renderer);
+  window->SetDesiredUpdateRate(0.5); // a still frame: 2 s, a fifth or so of it the volume's
+  window->Render();
+  int dims[3];
+  scene.Mapper->GetTransportVolume()->GetDimensions(dims);
+  EXPECT_EQ(dims[0], 24) << "a still frame was built at the dragging scale";
+  EXPECT_LT(scene.Volume->GetAllocatedRenderTime(), 1.0) << "the volume's share is not small";
+  window->SetDesiredUpdateRate(0.0001);
   window->RemoveRenderer(scene.Renderer);
 }
 
