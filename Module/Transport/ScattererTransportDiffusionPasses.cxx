@@ -56,7 +56,9 @@ vtkTextureObject* Diffuse(const TransportPass& pass, const CoarseUniforms& u, in
   ScopedSampler medium(program, "st_coarseMedium", textures.CoarseMedium);
   ScopedSampler source(program, "st_coarseSource", textures.CoarseSource);
   // rgb alone: alpha keeps the occlusion the atlases start with (pass 0d).
+  // The caller's mask is restored on return, whatever it was.
   vtkOpenGLState* state = pass.Window->GetState();
+  vtkOpenGLState::ScopedglColorMask mask(state);
   state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
   int current = 0;
   for (int i = 0; i < iterations; ++i)
@@ -69,7 +71,6 @@ vtkTextureObject* Diffuse(const TransportPass& pass, const CoarseUniforms& u, in
     current = 1 - current;
     pass.Progress.StepDone();
   }
-  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   return textures.Fluence[1 - current];
 }
 
