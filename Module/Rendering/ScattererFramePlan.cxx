@@ -68,10 +68,21 @@ std::string Unsupported(
   {
     return "a rectilinear-grid input";
   }
+  // The per-sample photon test reads the voxels as they are: it would still see
+  // masked-out, clipped or cropped matter as occluders (a roof cropped away halved the
+  // light under it).
   if (source.Mask && !parameters.Transport())
   {
-    // The per-sample photon test would still see masked-out matter as occluders.
     return "a mask input in per-sample mode (the transport mode honours binary masks)";
+  }
+  if (source.Clipped && !parameters.Transport())
+  {
+    return "clipping planes in per-sample mode (the transport mode honours them)";
+  }
+  if (source.Cropped && !parameters.CroppedMatterCastsShadows && !parameters.Transport())
+  {
+    return "cropping in per-sample mode (the transport mode honours it; so does "
+           "CroppedMatterCastsShadows on, where cropped matter is meant to cast shadows)";
   }
   if (source.UseDepthPass)
   {
@@ -96,6 +107,35 @@ std::string DroppedMaterials(
 
 // A vtkMultiVolume: each input as the ray caster composites it (one scalar through its
 // volume's 1D transfer functions), or why it cannot be lit.
+// Does VTK's ray caster multiply a step's opacity by a gradient opacity that is below 1
+// somewhere (a 1D transfer function with a gradient opacity function set and not
+// disabled)? VTK looks the function up as it stands (vtkPiecewiseFunction::GetTable),
+// so one with no nodes gives 0 everywhere; with nodes it is their linear interpolation,
+// held at the ends, and below 1 somewhere exactly when some node is.
+bool HidesByGradient(vtkVolumeProperty* property)
+{
+  if (property->GetTransferFunctionMode() != vtkVolumeProperty::TF_1D ||
+    !property->HasGradientOpacity(0) || property->GetDisableGradientOpacity(0))
+  {
+    return false;
+  }
+  vtkPiecewiseFunction* function = property->GetGradientOpacity(0);
+  if (function->GetSize() == 0)
+  {
+    return true;
+  }
+  for (int i = 0; i < function->GetSize(); ++i)
+  {
+    double node[4];
+    function->GetNodeValue(i, node);
+    if (!(node[1] >= 1.0))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 std::string PlanParts(const VolumeSource& source, FramePlan& plan)
 {
   if (source.Parts.size() > static_cast<size_t>(vtkScattererTransportVolume::Inputs::kMaxParts))
@@ -123,6 +163,10 @@ std::string PlanParts(const VolumeSource& source, FramePlan& plan)
     if (part.Volume->GetProperty()->GetTransferFunctionMode() == vtkVolumeProperty::TF_2D)
     {
       return "2D transfer functions in a vtkMultiVolume";
+    }
+    if (HidesByGradient(part.Volume->GetProperty()))
+    {
+      return "gradient opacity in a vtkMultiVolume";
     }
     plan.Parts.push_back(part);
   }
@@ -166,6 +210,27 @@ std::string PlanComponents(vtkVolumeProperty* property, const VolumeSource& sour
     }
     const std::string problem = Transfer2DProblem(property->GetTransferFunction2D());
     return problem.empty() ? "" : "this 2D transfer function (" + problem + ")";
+  }
+  plan.GradientOpacity = HidesByGradient(property);
+  if (plan.GradientOpacity)
+  {
+    if (!parameters.Transport())
+    {
+      return "gradient opacity in per-sample mode (the photon test would see the matter it "
+             "hides as occluders; the transport mode lights it)";
+    }
+    if (n != 1)
+    {
+      return "gradient opacity on multi-component scalars";
+    }
+    if (source.Mask && source.LabelMapMask)
+    {
+      return "a label-map mask with gradient opacity";
+    }
+    if (!(plan.SampleDistance > 0.0) || !std::isfinite(plan.SampleDistance))
+    {
+      return "gradient opacity with a sample distance that is not positive";
+    }
   }
   if (n == 1)
   {

@@ -53,6 +53,11 @@ struct FramePlan
   /// A 2D transfer function (over the scalar and its gradient magnitude) gives colour and
   /// opacity, one ray step of SampleDistance at a time (ScattererTransfer2D.h).
   bool Transfer2D = false;
+  /// One scalar with a 1D transfer function whose gradient opacity hides some matter: VTK's
+  /// ray caster multiplies each step's opacity by the gradient opacity at the scalar's
+  /// gradient magnitude, and the transport's medium takes it over (scalar, gradient
+  /// magnitude) alike (ScattererTransfer2D.h), so that hidden matter casts no shadow.
+  bool GradientOpacity = false;
   /// A vtkMultiVolume's inputs, in the ray caster's order (its input ports, ascending);
   /// empty for one volume. Image, Scalars and CellFlag above are the first one's.
   struct Part
@@ -81,6 +86,8 @@ struct VolumeSource
   bool LabelMapMask = false; ///< Mask is a label map (VTK's LabelMapMaskType)
   int BlendMode = 0;
   bool UseDepthPass = false;
+  bool Clipped = false;        ///< clipping planes are set
+  bool Cropped = false;        ///< cropping is on
   double SampleDistance = 1.0; ///< vtkVolumeMapper's SampleDistance (world units)
   /// The ray caster's step between samples on still frames, as VTK 9.1 picks it from
   /// SampleDistance, AutoAdjustSampleDistances and LockSampleDistanceToInputSpacing

@@ -73,6 +73,26 @@ void TabulateTransfer2D(
   }
 }
 
+void TabulateGradientOpacity(const float* row, int width, vtkPiecewiseFunction* gradientOpacity,
+  double rangeWidth, double step, int rows, std::vector<float>& medium)
+{
+  medium.assign(static_cast<size_t>(4) * width * rows, 0.0f);
+  for (int y = 0; y < rows; ++y)
+  {
+    // Row y is read at the normalised magnitude (y + 0.5) / rows (its texel's centre), so
+    // that the linear read between rows follows the function as VTK's finer table does.
+    const double gy = Clamped01(gradientOpacity->GetValue((y + 0.5) / rows * 0.25 * rangeWidth));
+    for (int x = 0; x < width; ++x)
+    {
+      const float* in = row + 4 * static_cast<size_t>(x);
+      float* out = medium.data() + 4 * (static_cast<size_t>(y) * width + x);
+      std::copy(in, in + 3, out);
+      const double alpha = -std::expm1(-static_cast<double>(in[3]) * step);
+      out[3] = static_cast<float>(scatterer::extinctionFromOpacity(gy * alpha, step));
+    }
+  }
+}
+
 void Transfer2DVisibility(vtkImageData* table, double lo, double hi, double sampleDistance,
   double unit, vtkPiecewiseFunction* opacity, vtkColorTransferFunction* color)
 {

@@ -29,6 +29,21 @@ void TabulateTransfer2D(
   vtkImageData* table, double sampleDistance, std::vector<float>& medium, int& rows);
 
 /**
+ * The medium over (normalised scalar, gradient magnitude) of one scalar's 1D transfer
+ * functions with a gradient opacity, as VTK 9.1's ray caster composites a step: the
+ * scalar opacity corrected to the step, alpha = 1 - exp(-sigma_t step), times the
+ * gradient opacity g at the magnitude, an extinction of
+ *   sigma_t' = -ln(1 - g alpha) / step
+ * (sigma_t where g = 1). @p row is the 1D medium (@p width entries of albedo rgb and
+ * sigma_t per world unit); the magnitude axis gets @p rows rows of g over
+ * [0, @p rangeWidth / 4], as VTK spans its gradient opacity table
+ * (vtkOpenGLVolumeGradientOpacityTable; computeGradient normalises the magnitude by a
+ * quarter of the scalar range), each at its texel's centre.
+ */
+void TabulateGradientOpacity(const float* row, int width, vtkPiecewiseFunction* gradientOpacity,
+  double rangeWidth, double step, int rows, std::vector<float>& medium);
+
+/**
  * What a scalar shows at its most visible gradient, over the scalar range [lo, hi]:
  * @p opacity per @p unit distance (the 1D convention materials are derived in) and
  * @p color there.

@@ -96,6 +96,10 @@ void TextureToDataset(vtkImageData* image, int cellFlag, vtkTextureObject* textu
   }
 }
 
+// Rows of the medium over the gradient magnitude with a gradient opacity (each of
+// kMediumTableSize entries): a 4 MiB table.
+constexpr int kGradientOpacityRows = 64;
+
 // A vtkMultiVolume's box: at most this many texels along an axis (before the
 // transport's own downsampling).
 constexpr int kMaxBoxTexels = 1024;
@@ -449,6 +453,11 @@ std::string TransportUpdate::TablesKey(vtkVolume* vol, const FramePlan& plan,
     vtkImageData* table = property->GetTransferFunction2D();
     key << "|2d:" << table << ',' << table->GetMTime() << ',' << plan.SampleDistance;
   }
+  if (plan.GradientOpacity)
+  {
+    key << "|gradient opacity:" << property->GetGradientOpacity(0)->GetMTime() << ','
+        << plan.SampleDistance;
+  }
   key << '|' << templates.GetGenerationKey() << '|' << parameters.PhotonCap << '|' << plan.Radius;
   // A label-map mask adds one medium row per label: its transfer functions count too.
   key << '|' << plan.Features.LabelMask;
@@ -542,7 +551,8 @@ void TransportUpdate::UpdateComponents(vtkVolume* vol, const FramePlan& plan)
       t.ComponentMode = t.Components == 2 ? TransportInputs::LuminanceAlpha : TransportInputs::RGBA;
       break;
     default:
-      t.ComponentMode = plan.Transfer2D ? TransportInputs::Transfer2D : TransportInputs::OneScalar;
+      t.ComponentMode = plan.Transfer2D || plan.GradientOpacity ? TransportInputs::Transfer2D
+                                                                : TransportInputs::OneScalar;
   }
   // A 2D transfer function's gradient, as VTK's computeGradient takes it.
   double spacing[3];
@@ -761,9 +771,21 @@ void TransportUpdate::UpdateVolumeTables(vtkVolume* vol, const FramePlan& plan)
   t.Medium.assign(static_cast<size_t>(4) * kMediumTableSize * t.MediumRows, 0.0f);
   switch (t.ComponentMode)
   {
-    case TransportInputs::Transfer2D: // its own table, over (scalar, gradient magnitude)
-      TabulateTransfer2D(
-        property->GetTransferFunction2D(), plan.SampleDistance, t.Medium, t.MediumRows);
+    case TransportInputs::Transfer2D: // over (scalar, gradient magnitude)
+      if (plan.Transfer2D)            // its own table
+      {
+        TabulateTransfer2D(
+          property->GetTransferFunction2D(), plan.SampleDistance, t.Medium, t.MediumRows);
+      }
+      else // the 1D functions and the gradient opacity
+      {
+        std::vector<float> oneScalar(static_cast<size_t>(4) * kMediumTableSize);
+        TabulateRow(oneScalar.data(), property, 0, ranges[0]);
+        t.MediumRows = kGradientOpacityRows;
+        TabulateGradientOpacity(oneScalar.data(), kMediumTableSize, property->GetGradientOpacity(0),
+          static_cast<double>(ranges[0][1]) - ranges[0][0], plan.SampleDistance, t.MediumRows,
+          t.Medium);
+      }
       break;
     case TransportInputs::Independent:
       for (int c = 0; c < t.Components; ++c)

@@ -25,6 +25,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
+#include "vtkPlaneCollection.h"
 #include "vtkRenderer.h"
 #include "vtkVolume.h"
 #include "vtkVolumeInputHelper.h"
@@ -535,6 +536,8 @@ std::string vtkScattererTemplateVolumeMapper::PlanFrame(vtkRenderer* ren, vtkVol
   source.LabelMapMask = this->GetMaskType() == LabelMapMaskType;
   source.BlendMode = this->GetBlendMode();
   source.UseDepthPass = this->GetUseDepthPass() != 0;
+  source.Clipped = this->GetClippingPlanes() && this->GetClippingPlanes()->GetNumberOfItems() > 0;
+  source.Cropped = this->GetCropping() != 0;
   source.SampleDistance = this->GetSampleDistance();
   this->StillSampling(vol, source.StillRayStep, source.VoxelSize);
   source.ScalarMode = this->ScalarMode;

@@ -244,6 +244,59 @@ TEST(MapperBehaviour, MultiComponentDataInPerSampleModeRendersAsStockWithOneWarn
   EXPECT_EQ(MaxDifference(first, scene.RenderStock()), 0);
 }
 
+// The per-sample photon test reads the voxels as they are, so matter the picture hides
+// would still cast shadows (a roof cropped away halved the light under it): with clipping
+// planes, cropping (unless cropped matter is meant to cast shadows) or a gradient opacity
+// that hides matter, that mode renders as stock and says why once.
+TEST(MapperBehaviour, HiddenMatterInPerSampleModeRendersAsStockWithOneWarning)
+{
+  for (const std::string hide : { "clipping planes", "cropping", "gradient opacity" })
+  {
+    SCOPED_TRACE(hide);
+    Scene scene;
+    vtkNew<vtkPlane> plane;
+    plane->SetOrigin(0.5 * N, 0.5 * N, 0.5 * N);
+    plane->SetNormal(-1.0, 0.3, 0.2);
+    vtkNew<vtkPiecewiseFunction> gradientOpacity;
+    gradientOpacity->AddPoint(0, 0.2);
+    gradientOpacity->AddPoint(20, 1.0);
+    for (auto* m : { static_cast<vtkGPUVolumeRayCastMapper*>(scene.Mapper),
+           static_cast<vtkGPUVolumeRayCastMapper*>(scene.Stock) })
+    {
+      if (hide == "clipping planes")
+      {
+        m->AddClippingPlane(plane);
+      }
+      else if (hide == "cropping")
+      {
+        m->CroppingOn();
+        m->SetCroppingRegionPlanes(0, 0.8 * N, 0, N, 0, 0.7 * N);
+      }
+    }
+    if (hide == "gradient opacity")
+    {
+      scene.Property->SetGradientOpacity(gradientOpacity);
+    }
+    scene.Mapper->SetIlluminationMode(vtkScattererTemplateVolumeMapper::PER_SAMPLE);
+    vtkNew<vtkTest::ErrorObserver> warnings;
+    scene.Mapper->AddObserver(vtkCommand::WarningEvent, warnings);
+    const auto first = scene.Render();
+    scene.Render();
+    EXPECT_EQ(WarningCount(warnings), 1u);
+    EXPECT_NE(LastWarning(warnings).find(hide + " in per-sample mode"), std::string::npos)
+      << LastWarning(warnings);
+    EXPECT_EQ(MaxDifference(first, scene.RenderStock()), 0);
+    if (hide == "cropping")
+    {
+      // Cropped matter meant to cast shadows (a piece's ghost voxels): lit.
+      scene.Mapper->CroppedMatterCastsShadowsOn();
+      scene.Render();
+      EXPECT_EQ(scene.Mapper->GetLastShaderFeatures().rfind("stock", 0), std::string::npos)
+        << scene.Mapper->GetLastShaderFeatures();
+    }
+  }
+}
+
 TEST(MapperBehaviour, UniformOnlyChangesDoNotRebuildTheShader)
 {
   for (int mode :
