@@ -171,6 +171,25 @@ def ct_head_ranks(args):
     print("for information, without the light exchange, %d ranks vs 1: %s"
           % (ranks, compare.difference(alone, one_rank)))
 
+    # Ghost layers lowered after a render: the pieces ask again, and keep only those
+    # (the reader still holds its larger ones).
+    view = _views[id(scenes.CT_HEAD_SCENE)]
+    reader = scenes.open_volume(args.data)
+    display = scenes.show_volume(reader, view, "Scatterer Volume", scenes.CT_HEAD_SCENE, "POINTS")
+    view.StillRender()
+    before = scenes.rank0_info(display)
+    display.ScattererGhostLayers = 0
+    view.StillRender()
+    after = scenes.rank0_info(display)
+    Hide(reader, view)
+    print("ghost layers lowered to 0 after a render: asked %s -> %s, piece %s -> %s KiB"
+          % (before["ScattererRequestedGhostLayersInfo"], after["ScattererRequestedGhostLayersInfo"],
+             before["ScattererPieceMemoryKiBInfo"], after["ScattererPieceMemoryKiBInfo"]))
+    check(after["ScattererRequestedGhostLayersInfo"][0] == 0,
+          "the pieces asked for the ghost layers set after a render")
+    check(after["ScattererPieceMemoryKiBInfo"][0] < before["ScattererPieceMemoryKiBInfo"][0],
+          "the piece let the ghost layers it no longer needs go")
+
 
 def check_exchange(info, ranks):
     """Rank 0 exchanged light with the others, and its transport used the maps."""
@@ -337,6 +356,25 @@ def progress_and_interaction_one_rank(args):
               for info in orbit),
           "an orbit frame's stages: the sweeps take time, the medium none, and together no "
           "more than the rebuild")
+
+    # A setting changes the mapper, not the data: one the transport does not read (the
+    # per-sample mode's template blending) rebuilds nothing, one it reads (multiple
+    # scattering) the light but not the medium. Each used to hand the mapper the data
+    # again: uploaded again, the medium redrawn.
+    before = scenes.rank0_info(display)["ScattererIlluminationBuildInfo"]
+    display.ScattererTemplateBlending = 0
+    view.StillRender()
+    blending = scenes.rank0_info(display)["ScattererIlluminationBuildInfo"]
+    display.ScattererMultipleScattering = 0.5
+    view.StillRender()
+    scattering = scenes.rank0_info(display)["ScattererIlluminationBuildInfo"]
+    print("illumination builds: before %s, template blending off %s, multiple scattering "
+          "0.5 %s" % (before[:2], blending[:2], scattering[:2]))
+    check(blending[:2] == before[:2], "template blending (per-sample only) rebuilt nothing: "
+          "%s -> %s" % (before[:2], blending[:2]))
+    check(scattering[0] == blending[0] + 1 and scattering[1] == blending[1],
+          "multiple scattering rebuilt the light and not the medium: %s -> %s"
+          % (blending[:2], scattering[:2]))
 
 
 def vector_component_one_rank(args):

@@ -132,7 +132,48 @@ void vtkScattererVolumeRepresentation::ExchangeLight(vtkObject*, unsigned long, 
 void vtkScattererVolumeRepresentation::SetLightExchangeEnabled(int exchange)
 {
   this->LightExchange->SetEnabled(exchange != 0);
-  this->MarkModified();
+  this->Modified();
+}
+
+void vtkScattererVolumeRepresentation::SetGhostLayers(int layers)
+{
+  layers = std::min(std::max(layers, -1), kMaxGhostLevels);
+  if (layers != this->GhostLayers)
+  {
+    this->GhostLayers = layers;
+    // The pieces ask upstream again (RequestUpdateExtent).
+    this->MarkModified();
+  }
+}
+
+int vtkScattererVolumeRepresentation::GhostLevelsFor(double reach) const
+{
+  if (this->GhostLayers >= 0)
+  {
+    return this->GhostLayers;
+  }
+  if (!(this->FinestSpacing > 0.0) || !(reach > 0.0))
+  {
+    return 0;
+  }
+  // One layer more than the reach: trilinear interpolation at the last owned voxel.
+  const double levels = std::ceil(reach / this->FinestSpacing) + 1.0;
+  return static_cast<int>(std::min(levels, static_cast<double>(kMaxGhostLevels)));
+}
+
+void vtkScattererVolumeRepresentation::SettingChanged()
+{
+  const bool otherGhosts = this->Pieces > 1 &&
+    this->GhostLevelsFor(this->GetScattererMapper()->GetIlluminationReach(this->Spacing)) !=
+      this->RequestedGhostLevels;
+  if (otherGhosts)
+  {
+    this->MarkModified();
+  }
+  else
+  {
+    this->Modified();
+  }
 }
 
 double* vtkScattererVolumeRepresentation::GetLightExchangeInfo()
@@ -165,12 +206,15 @@ vtkScattererTemplateVolumeMapper* vtkScattererVolumeRepresentation::GetScatterer
 }
 
 // Each setter changes the mapper only; the transport volume and shader notice the
-// change themselves. MarkModified makes ParaView render the view again.
+// change themselves, and ParaView renders the view again as for any property of a
+// representation. MarkModified (which makes ParaView hand the mapper the data again,
+// uploaded again, the light's medium redrawn: 1.5-1.9 s on the CT head for a switch the
+// transport does not read) only where the pieces must ask for other ghost layers.
 #define vtkScattererForward(name, type)                                                            \
   void vtkScattererVolumeRepresentation::Set##name(type value)                                     \
   {                                                                                                \
     this->GetScattererMapper()->Set##name(value);                                                  \
-    this->MarkModified();                                                                          \
+    this->SettingChanged();                                                                        \
   }
 vtkScattererForward(IlluminationEnabled, bool);
 vtkScattererForward(ShadowsEnabled, bool);
@@ -255,20 +299,15 @@ int vtkScattererVolumeRepresentation::RequestUpdateExtent(
     {
       continue;
     }
-    int ghosts = this->GhostLayers;
-    if (ghosts < 0)
+    const double* spacing = inInfo->Get(vtkDataObject::SPACING());
+    std::copy(spacing, spacing + 3, this->Spacing);
+    this->FinestSpacing =
+      std::min({ std::abs(spacing[0]), std::abs(spacing[1]), std::abs(spacing[2]) });
+    const int ghosts =
+      this->GhostLevelsFor(this->GetScattererMapper()->GetIlluminationReach(spacing));
+    if (ghosts == 0 && this->GhostLayers < 0)
     {
-      const double* spacing = inInfo->Get(vtkDataObject::SPACING());
-      const double finest =
-        std::min({ std::abs(spacing[0]), std::abs(spacing[1]), std::abs(spacing[2]) });
-      const double reach = this->GetScattererMapper()->GetIlluminationReach(spacing);
-      if (!(finest > 0.0) || !(reach > 0.0))
-      {
-        continue;
-      }
-      // One layer more than the reach: trilinear interpolation at the last owned voxel.
-      const double levels = std::ceil(reach / finest) + 1.0;
-      ghosts = static_cast<int>(std::min(levels, static_cast<double>(kMaxGhostLevels)));
+      continue;
     }
     const int upstream = inInfo->Has(SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS())
       ? inInfo->Get(SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS())
@@ -302,6 +341,19 @@ int vtkScattererVolumeRepresentation::RequestData(
   owned->GetExtent(this->OwnedExtent);
   vtkSmartPointer<vtkImageData> ghosted = vtkSmartPointer<vtkImageData>::New();
   ghosted->ShallowCopy(input);
+  // A source keeps the ghost layers of an earlier, larger request (GhostLayers lowered
+  // after a render): only those asked for now are kept, the memory of the rest let go.
+  int keep[6];
+  const int* has = input->GetExtent();
+  for (int i = 0; i < 6; ++i)
+  {
+    const int wanted = this->OwnedExtent[i] + (i % 2 ? 1 : -1) * this->RequestedGhostLevels;
+    keep[i] = i % 2 ? std::min(has[i], wanted) : std::max(has[i], wanted);
+  }
+  if (!std::equal(keep, keep + 6, has))
+  {
+    ghosted->Crop(keep);
+  }
   // The ghost flags are for the superclass's crop above; the ray caster must see
   // every voxel as data (the cropping planes below do the hiding).
   ghosted->GetCellData()->RemoveArray(vtkDataSetAttributes::GhostArrayName());

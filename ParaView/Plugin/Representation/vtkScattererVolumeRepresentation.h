@@ -95,7 +95,7 @@ public:
    * in a single-process render; 0 none (less memory and transfer, visible seams where
    * occluders sit across a border); n exactly n.
    */
-  vtkSetClampMacro(GhostLayers, int, -1, 4096);
+  void SetGhostLayers(int layers);
   vtkGetMacro(GhostLayers, int);
   ///@}
 
@@ -161,6 +161,17 @@ private:
    */
   void UpdateMapperInput();
 
+  /** Ghost layers each piece asks for when the illumination reaches @p reach. */
+  int GhostLevelsFor(double reach) const;
+
+  /**
+   * After a setting of the mapper changed: split data whose pieces would now ask for
+   * other ghost layers is requested again (MarkModified); otherwise the mapper alone
+   * changed, and its frames rebuild what depends on it (the data, its upload and the
+   * medium of the light stay as they are).
+   */
+  void SettingChanged();
+
   /** The mapper's ProgressEvent, re-sent as this representation's. */
   void ForwardMapperProgress(vtkObject* caller, unsigned long event, void* callData);
 
@@ -169,6 +180,8 @@ private:
 
   int GhostLayers = -1;
   int RequestedGhostLevels = 0;
+  double FinestSpacing = 0.0;      // of the split data, at the last update (0: not split)
+  double Spacing[3] = { 0, 0, 0 }; // of the split data, at the last update
   int UserCropping = 0;
   bool RendersOwnedPartOnly = false; // the cache holds ghost layers beyond OwnedBounds
   double OwnedBounds[6] = { 0, -1, 0, -1, 0, -1 };
