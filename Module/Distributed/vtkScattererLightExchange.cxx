@@ -300,10 +300,20 @@ void vtkScattererLightExchange::Exchange(vtkRenderer* renderer, vtkVolume* volum
   {
     key << ',' << owned[a] << ',' << whole[a];
   }
+  // A directional light's map is its direction's alone (MapOf): VTK's headlight and
+  // ParaView's light kit move their positions with the camera, and zooming or panning
+  // must not exchange again (each exchange also rebuilds every piece's light).
   for (const auto& l : lights)
   {
-    key << '|' << l.Positional << ',' << l.Toward[0] << ',' << l.Toward[1] << ',' << l.Toward[2]
-        << ',' << l.Position[0] << ',' << l.Position[1] << ',' << l.Position[2];
+    key << '|' << l.Positional;
+    if (l.Positional)
+    {
+      key << ',' << l.Position[0] << ',' << l.Position[1] << ',' << l.Position[2];
+    }
+    else
+    {
+      key << ',' << l.Toward[0] << ',' << l.Toward[1] << ',' << l.Toward[2];
+    }
   }
   for (int r = 0; r < 3; ++r)
   {

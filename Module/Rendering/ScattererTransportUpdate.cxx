@@ -642,7 +642,8 @@ void TransportUpdate::UpdateLights(
     out.push_back(light);
   }
   // A piece of a distributed volume: the maps are for the lights the exchange saw
-  // before this frame rendered; they must be this frame's.
+  // before this frame rendered; they must be this frame's (a directional light's by its
+  // direction alone, as the exchange keys it: a headlight moves with a pan).
   const vtkScattererLightExchange::Result* exchange = source.Exchange;
   if (!exchange || !exchange->Active)
   {
@@ -655,8 +656,9 @@ void TransportUpdate::UpdateLights(
     same = a.Positional == out[l].Positional;
     for (int c = 0; same && c < 3; ++c)
     {
-      same = std::abs(a.Toward[c] - out[l].Toward[c]) <= 1e-5f &&
-        std::abs(a.Position[c] - out[l].Position[c]) <= 1e-5f * (1.0f + std::abs(a.Position[c]));
+      same = a.Positional
+        ? std::abs(a.Position[c] - out[l].Position[c]) <= 1e-5f * (1.0f + std::abs(a.Position[c]))
+        : std::abs(a.Toward[c] - out[l].Toward[c]) <= 1e-5f;
     }
   }
   if (!same)

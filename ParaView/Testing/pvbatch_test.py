@@ -190,6 +190,32 @@ def ct_head_ranks(args):
     check(after["ScattererPieceMemoryKiBInfo"][0] < before["ScattererPieceMemoryKiBInfo"][0],
           "the piece let the ghost layers it no longer needs go")
 
+    # Under the light kit (lights that follow the camera) a pan moves the lights'
+    # positions, not their directions: no exchange, no rebuild; an orbit turns them.
+    reader = scenes.open_volume(args.data)
+    display = scenes.show_volume(reader, view, "Scatterer Volume", scenes.CT_HEAD_SCENE, "POINTS")
+    view.AdditionalLights = []
+    view.UseLight = 1
+    view.StillRender()
+    start = scenes.rank0_info(display)
+    shift = [5.0, -3.0, 0.0]
+    view.CameraPosition = [p + d for p, d in zip(view.CameraPosition, shift)]
+    view.CameraFocalPoint = [p + d for p, d in zip(view.CameraFocalPoint, shift)]
+    view.StillRender()
+    panned = scenes.rank0_info(display)
+    view.GetActiveCamera().Azimuth(5.0)
+    view.StillRender()
+    orbited = scenes.rank0_info(display)
+    Hide(reader, view)
+    counts = [(i["ScattererLightExchangeInfo"][0], i["ScattererIlluminationBuildInfo"][0])
+              for i in (start, panned, orbited)]
+    print("light kit, (exchanges, builds): first frame %s, panned %s, orbited %s" % tuple(counts))
+    check(counts[1] == counts[0], "a pan under the light kit exchanged or rebuilt nothing")
+    check(panned["ScattererLightExchangeInfo"][3] == 1,
+          "the panned frame's transport used the exchange's maps")
+    check(counts[2][0] == counts[1][0] + 1 and counts[2][1] == counts[1][1] + 1,
+          "an orbit under the light kit exchanged and rebuilt once")
+
 
 def check_exchange(info, ranks):
     """Rank 0 exchanged light with the others, and its transport used the maps."""
