@@ -964,6 +964,35 @@ TEST(TransportVolume, RebuiltOnlyWhenWhatItDependsOnChanges)
   EXPECT_EQ(transport->GetBuildCount(), first + 2) << "a light move was not seen";
 }
 
+// A transfer function touched without a change of value (Modified(), the same points
+// set again, as an editor or a preset does) makes the same tables: nothing to rebuild.
+TEST(TransportVolume, TransferFunctionTouchedWithoutAChangeRebuildsNothing)
+{
+  SlabInWindow slab;
+  vtkScattererTransportVolume* transport = slab.Transport;
+  vtkPiecewiseFunction* opacity = slab.Scene.Property->GetScalarOpacity();
+  const int first = transport->GetBuildCount();
+  opacity->Modified();
+  slab.Scene.Property->GetRGBTransferFunction()->Modified();
+  slab.Window->Render();
+  EXPECT_EQ(transport->GetBuildCount(), first) << "Modified() alone rebuilt it";
+  std::vector<double> nodes(static_cast<size_t>(4 * opacity->GetSize()));
+  for (int i = 0; i < opacity->GetSize(); ++i)
+  {
+    opacity->GetNodeValue(i, nodes.data() + 4 * i);
+  }
+  opacity->RemoveAllPoints();
+  for (size_t i = 0; i < nodes.size(); i += 4)
+  {
+    opacity->AddPoint(nodes[i], nodes[i + 1], nodes[i + 2], nodes[i + 3]);
+  }
+  slab.Window->Render();
+  EXPECT_EQ(transport->GetBuildCount(), first) << "the same points set again rebuilt it";
+  opacity->AddPoint(150, 0.05);
+  slab.Window->Render();
+  EXPECT_EQ(transport->GetBuildCount(), first + 1) << "a real edit was not seen";
+}
+
 // What a move changes: a directional light is its direction (VTK's headlight moves
 // its position with the camera: zooming or panning under it must not rebuild), and a
 // volume moved carries its medium and light along, unless a clipping plane stays in the
