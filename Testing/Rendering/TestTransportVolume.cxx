@@ -964,6 +964,40 @@ TEST(TransportVolume, RebuiltOnlyWhenWhatItDependsOnChanges)
   EXPECT_EQ(transport->GetBuildCount(), first + 2) << "a light move was not seen";
 }
 
+// A colour channel of exactly 1 absorbs nothing; in matter far denser than a coarse texel
+// is wide the diffusion piled that channel's light up (a dense white ball glowed at the
+// display's ceiling, with 0.999 it showed as stock Phong does). Every channel absorbs
+// at least 0.1 % (scatterer_transport_diffuse.glsl): white is lit as 0.999 is.
+TEST(TransportVolume, WhiteDenseMatterIsLitAsNearlyWhite)
+{
+  const auto light = [](double white)
+  {
+    const int n = 32;
+    const double c = 0.5 * (n - 1);
+    TransportScene scene(MakeVolume(n, 1.0,
+                           [c](int i, int j, int k) -> unsigned char
+                           {
+                             const double r2 =
+                               (i - c) * (i - c) + (j - c) * (j - c) + (k - c) * (k - c);
+                             return r2 <= 100.0 ? 200 : 0;
+                           }),
+      0.9);
+    scene.Property->SetScalarOpacityUnitDistance(1e-3);
+    scene.Property->SetInterpolationTypeToLinear();
+    vtkColorTransferFunction* colour = scene.Property->GetRGBTransferFunction();
+    colour->RemoveAllPoints();
+    colour->AddRGBPoint(0, white, white, white);
+    colour->AddRGBPoint(255, white, white, white);
+    scene.SetDirectional(0.3, 0.2, 1.0);
+    const std::vector<float> rgb = scene.ReceivedLight();
+    return std::accumulate(rgb.begin(), rgb.end(), 0.0);
+  };
+  const double white = light(1.0), nearly = light(0.999);
+  std::printf("received light, summed: white %g, 0.999 %g\n", white, nearly);
+  ASSERT_GT(nearly, 0.0);
+  EXPECT_LT(white / nearly, 1.1) << "white dense matter piles its light up";
+}
+
 // A transfer function touched without a change of value (Modified(), the same points
 // set again, as an editor or a preset does) makes the same tables: nothing to rebuild.
 TEST(TransportVolume, TransferFunctionTouchedWithoutAChangeRebuildsNothing)
