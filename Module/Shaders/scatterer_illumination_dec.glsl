@@ -77,9 +77,17 @@ vec3 st_strideRoot(vec3 r)
 //ST::ENDIF
 
 //ST::IF PERSAMPLE
-// Material of a normalized scalar (the TF-table coordinate), -1 for none.
+// Material of a normalized scalar (the TF-table coordinate), -1 for none (st_probe's
+// -1e6: outside the volume). Clamped as VTK's tables clamp it: the ray caster's scalar
+// at the data's maximum came out a little above 1 for 8-bit data (by 0.002 to 0.01),
+// beyond the last material's range, and a ball at the data's maximum was left unlit.
 int st_material(float s)
 {
+  if (s < -1.0e5)
+  {
+    return -1;
+  }
+  s = clamp(s, 0.0, 1.0);
   for (int m = 0; m < ST_MAX_MATERIALS; ++m)
   {
     if (m >= st_materialCount) break;

@@ -171,6 +171,11 @@ def ct_head_ranks(args):
     print("for information, without the light exchange, %d ranks vs 1: %s"
           % (ranks, compare.difference(alone, one_rank)))
 
+    if ranks == 2:  # (on 4 ranks, 2 cores, the same checks would double the test's time)
+        ghost_layers_lowered_and_light_kit_pan(args)
+
+
+def ghost_layers_lowered_and_light_kit_pan(args):
     # Ghost layers lowered after a render: the pieces ask again, and keep only those
     # (the reader still holds its larger ones).
     view = _views[id(scenes.CT_HEAD_SCENE)]

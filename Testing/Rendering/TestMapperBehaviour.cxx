@@ -30,6 +30,7 @@
 #include "vtkScattererTemplateVolumeMapper.h"
 #include "vtkScattererTransportVolume.h"
 #include "vtkShader.h"
+#include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkLightCollection.h"
 #include "vtkLightKit.h"
@@ -295,6 +296,70 @@ TEST(MapperBehaviour, HiddenMatterInPerSampleModeRendersAsStockWithOneWarning)
         << scene.Mapper->GetLastShaderFeatures();
     }
   }
+}
+
+// Per-sample mode classifies each photon's scalar into a material. For 8-bit data the ray
+// caster's normalised scalar at the data's maximum comes out a little above 1, past the
+// last material's range, and a ball at the data's maximum was left unlit (as stock). With
+// one voxel of 255 in a corner (the same ball below the maximum) it was lit.
+TEST(MapperBehaviour, PerSampleLightsMatterAtTheDataMaximum)
+{
+  const int n = 48;
+  const auto render = [n](bool voxelAbove, bool stock)
+  {
+    auto image = vtkSmartPointer<vtkImageData>::New();
+    image->SetDimensions(n, n, n);
+    image->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+    auto* p = static_cast<unsigned char*>(image->GetScalarPointer());
+    for (int k = 0; k < n; ++k)
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i)
+        {
+          const double r2 =
+            (i - 24.0) * (i - 24.0) + (j - 24.0) * (j - 24.0) + (k - 30.0) * (k - 30.0);
+          *p++ = r2 <= 64.0 ? 200 : (k >= 4 && k <= 6 ? 100 : 0);
+        }
+    if (voxelAbove)
+    {
+      *static_cast<unsigned char*>(image->GetScalarPointer(0, 0, n - 1)) = 255;
+    }
+    vtkNew<vtkVolumeProperty> property;
+    vtkNew<vtkPiecewiseFunction> opacity;
+    opacity->AddPoint(0, 0.0);
+    opacity->AddPoint(50, 0.0);
+    opacity->AddPoint(90, 0.6);
+    opacity->AddPoint(255, 0.9);
+    property->SetScalarOpacity(opacity);
+    property->SetInterpolationTypeToNearest();
+    vtkSmartPointer<vtkGPUVolumeRayCastMapper> mapper;
+    if (stock)
+    {
+      mapper = vtkSmartPointer<vtkOpenGLGPUVolumeRayCastMapper>::New();
+    }
+    else
+    {
+      auto ours = vtkSmartPointer<vtkScattererTemplateVolumeMapper>::New();
+      ours->SetIlluminationModeToPerSample();
+      mapper = ours;
+    }
+    mapper->SetInputData(image);
+    vtkNew<vtkVolume> volume;
+    volume->SetMapper(mapper);
+    volume->SetProperty(property);
+    vtkNew<vtkRenderer> renderer;
+    renderer->AddVolume(volume);
+    scatterer_testing::LightAndViewBallAbovePlate(renderer, n);
+    return scatterer_testing::RenderSceneOnce(renderer, mapper);
+  };
+  const auto atMaximum = render(false, false), belowMaximum = render(true, false);
+  const auto stock = render(false, true);
+  const auto same = scatterer_testing::CompareRgb(atMaximum, belowMaximum, 16);
+  const auto lit = scatterer_testing::CompareRgb(atMaximum, stock, 16);
+  std::printf("at the maximum against below it: mean %.2f, %.2f%% over 16; against stock: mean "
+              "%.2f\n",
+    same.Mean, 100.0 * same.FractionOver, lit.Mean);
+  EXPECT_LT(same.FractionOver, 0.01) << "matter at the data's maximum is lit otherwise";
+  EXPECT_GT(lit.Mean, 2.0) << "the scene is not lit at all: no test";
 }
 
 TEST(MapperBehaviour, UniformOnlyChangesDoNotRebuildTheShader)
