@@ -1,6 +1,7 @@
 #include "vtkScattererVolumeReader.h"
 
 #include "vtkDataArray.h"
+#include "vtkErrorCode.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -378,8 +379,18 @@ int vtkScattererVolumeReader::RequestInformation(
 {
   if (!this->ReadIntoCache())
   {
+    // No volume: the output must not keep the last file's (RequestData does not run),
+    // and the pipeline's error code says the read failed.
+    if (vtkImageData* output = vtkImageData::GetData(outputVector, 0))
+    {
+      output->Initialize();
+    }
+    this->SetErrorCode(this->FileName.empty() || !vtksys::SystemTools::FileExists(this->FileName)
+        ? vtkErrorCode::CannotOpenFileError
+        : vtkErrorCode::FileFormatError);
     return 0;
   }
+  this->SetErrorCode(vtkErrorCode::NoError);
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), this->Cached->GetExtent(), 6);
   outInfo->Set(vtkDataObject::SPACING(), this->Cached->GetSpacing(), 3);

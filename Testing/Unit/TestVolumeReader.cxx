@@ -3,7 +3,11 @@
 #include "ScattererDicomBytes.h"
 #include "vtkScattererVolumeReader.h"
 
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
 #include "vtkDataArray.h"
+#include "vtkExecutive.h"
+#include "vtkErrorCode.h"
 #include "vtkImageData.h"
 #include "vtkMetaImageWriter.h"
 #include "vtkNIFTIImageWriter.h"
@@ -237,6 +241,35 @@ TEST_F(VolumeReaderTest, ReaderAlgorithmFeedsThePipeline)
   reader->Update();
   EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), NX * NY * NZ);
   EXPECT_EQ(reader->GetFormatName(), "MetaImage");
+}
+
+// A failed read leaves no volume behind: the output of the last good file was kept
+// (RequestData does not run when RequestInformation fails), with no error code.
+TEST_F(VolumeReaderTest, FailedReadAfterAGoodOneLeavesNoVolume)
+{
+  WriteMeta(Path("v.mhd"));
+  std::ofstream(Path("bad.nii")) << "not a volume";
+  vtkNew<vtkScattererVolumeReader> reader;
+  vtkNew<vtkCallbackCommand> quiet; // the errors are expected: observed, not printed
+  quiet->SetCallback([](vtkObject*, unsigned long, void*, void*) {});
+  reader->AddObserver(vtkCommand::ErrorEvent, quiet);
+  reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, quiet);
+  reader->SetFileName(Path("v.mhd").c_str());
+  reader->Update();
+  ASSERT_EQ(reader->GetOutput()->GetNumberOfPoints(), NX * NY * NZ);
+  EXPECT_EQ(reader->GetErrorCode(), vtkErrorCode::NoError);
+  for (const char* name : { "bad.nii", "absent.nii" })
+  {
+    SCOPED_TRACE(name);
+    reader->SetFileName(Path(name).c_str());
+    reader->Update();
+    EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 0) << "the last file's volume was kept";
+    EXPECT_NE(reader->GetErrorCode(), vtkErrorCode::NoError);
+  }
+  reader->SetFileName(Path("v.mhd").c_str());
+  reader->Update();
+  EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), NX * NY * NZ);
+  EXPECT_EQ(reader->GetErrorCode(), vtkErrorCode::NoError);
 }
 
 TEST_F(VolumeReaderTest, MissingFileSaysSo)
