@@ -431,6 +431,18 @@ std::string FramePlanner::PlanMaterials(vtkVolume* vol, const VolumeSource& sour
   plan.OpacityRatios = scatterer_scene::OpacityRatios(plan.Materials);
   if (plan.Materials.Materials.empty())
   {
+    if (requested.empty() &&
+      parameters.MaterialDerivationRange[0] <= parameters.MaterialDerivationRange[1])
+    {
+      // The volume may well show: the range the user set is where nothing does.
+      std::ostringstream why;
+      why << "no material: the opacity transfer function is below 1e-4 over the material "
+             "derivation range ["
+          << derivation[0] << ", " << derivation[1] << "] (SetMaterialDerivationRange)";
+      warn("Scatterer-template illumination found " + why.str() +
+        "; this volume renders as vtkOpenGLGPUVolumeRayCastMapper would.");
+      return why.str();
+    }
     return "no material: the opacity transfer function is below 1e-4 everywhere";
   }
   if (plan.Materials.Dropped > 0)

@@ -362,6 +362,25 @@ TEST(MapperBehaviour, PerSampleLightsMatterAtTheDataMaximum)
   EXPECT_GT(lit.Mean, 2.0) << "the scene is not lit at all: no test";
 }
 
+// A material derivation range where the opacity is 0 leaves no material for a volume
+// that shows: it renders as stock, and says so once, naming the range (it said nothing,
+// and its reason blamed the transfer function).
+TEST(MapperBehaviour, DerivationRangeWithoutMatterRendersAsStockAndSaysWhy)
+{
+  Scene scene;
+  scene.Mapper->SetMaterialDerivationRange(2, 5);
+  vtkNew<vtkTest::ErrorObserver> warnings;
+  scene.Mapper->AddObserver(vtkCommand::WarningEvent, warnings);
+  const auto first = scene.Render();
+  scene.Render();
+  EXPECT_EQ(WarningCount(warnings), 1u);
+  EXPECT_NE(LastWarning(warnings).find("derivation range [2, 5]"), std::string::npos)
+    << LastWarning(warnings);
+  EXPECT_NE(scene.Mapper->GetLastShaderFeatures().find("derivation range"), std::string::npos)
+    << scene.Mapper->GetLastShaderFeatures();
+  EXPECT_EQ(MaxDifference(first, scene.RenderStock()), 0);
+}
+
 TEST(MapperBehaviour, UniformOnlyChangesDoNotRebuildTheShader)
 {
   for (int mode :
