@@ -248,7 +248,10 @@ int ParseRenderOptions(int argc, char* argv[], RenderOptions& o)
   perSample.push_back(AddSetting(app, "--interval", "N", il::IlluminationInterval,
     "per-sample: ray samples between photon evaluations", o.Interval));
   both.push_back(AddDouble(app, "--radius", "R", 1e-9, 1e9,
-    "template radius in world units, > 0 (default 10 x spacing)", o.Radius));
+    "template radius in world units, > 0 (default 10 x spacing); per-sample:\nthe photon "
+    "test's reach; transport: only caps the in-scattering\nkernel, which visible matter "
+    "keeps far shorter",
+    o.Radius));
   perSample.push_back(AddSetting(app, "--threshold", "T", il::PhotonThreshold,
     "per-sample: photon-loop cut-off on transmittance x intensity", o.Threshold));
   both.push_back(

@@ -133,6 +133,15 @@ double VolumeHistogram::ShareBelow(double value) const
 
 namespace
 {
+// The least gap between a preset's points: VTK sizes its lookup tables by the range over
+// the smallest gap, and points a millionth of the range apart (a binary volume's
+// classes) asked for a table of 10^6 entries, past the GPU's texture width (16384 on
+// llvmpipe), with two warnings a frame.
+double MinimumPointGap(double lo, double hi)
+{
+  return (hi - lo) / 4096.0;
+}
+
 struct PresetInfo
 {
   const char* Name;
@@ -225,8 +234,9 @@ bool MakeTransferPreset(const std::string& name, const VolumeHistogram& histogra
     // MRI intensities have no absolute scale: the tissue/background split is Otsu's
     // threshold, and the ramp spans the tissue's intensity quantiles.
     const double t = histogram.OtsuThreshold(lo, hi);
-    const double median = std::max(histogram.Quantile(0.5, t), t + 1e-6 * (hi - lo));
-    const double top = std::max(histogram.Quantile(0.99, t), median + 1e-6 * (hi - lo));
+    const double eps = MinimumPointGap(lo, hi);
+    const double median = std::max(histogram.Quantile(0.5, t), t + eps);
+    const double top = std::max(histogram.Quantile(0.99, t), median + eps);
     points = TransferPoints{ "mri",
       { { lo, 0.0 }, { t, 0.0 }, { median, 0.25 }, { top, 0.7 }, { hi, 0.7 } },
       { { lo, 0.5, 0.4, 0.4 }, { t, 0.7, 0.55, 0.5 }, { median, 0.9, 0.8, 0.75 },
@@ -239,7 +249,7 @@ bool MakeTransferPreset(const std::string& name, const VolumeHistogram& histogra
     // and organs show, translucent) to 0.8 at the dense class's median (bone, metal
     // opaque). The medians, not the maximum, set the scale, so that a few extreme
     // voxels (metal, noise) cannot leave everything else faint.
-    const double eps = 1e-6 * (hi - lo);
+    const double eps = MinimumPointGap(lo, hi);
     const double t1 = histogram.OtsuThreshold(lo, hi);
     const double t2 = std::max(histogram.OtsuThreshold(t1, hi), t1 + 2 * eps);
     const double tissue = std::clamp(histogram.Quantile(0.5, t1), t1 + eps, t2 - eps);

@@ -95,6 +95,26 @@ TEST(TransferPresets, EveryPresetIsVisibleSomewhereAndAnUnknownNameListsTheKnown
   EXPECT_NE(why.find("ct-bone"), std::string::npos) << why;
 }
 
+// VTK sizes its lookup tables by the range over the smallest gap between points: on a
+// two-valued volume the automatic preset's points lay a millionth of the range apart,
+// and VTK asked for a table of 10^6 texels (past the GPU's limit, two warnings a frame).
+TEST(TransferPresets, PointsOfABinaryVolumeLieAtLeastA4096thOfTheRangeApart)
+{
+  const se::VolumeHistogram h(TwoClassVolume(0, 1, 0.5));
+  for (const std::string name : { "auto", "mri" })
+  {
+    se::TransferPoints points;
+    std::string why;
+    ASSERT_TRUE(se::MakeTransferPreset(name, h, points, why)) << name << ": " << why;
+    for (size_t i = 1; i < points.Opacity.size(); ++i)
+    {
+      const double gap = points.Opacity[i][0] - points.Opacity[i - 1][0];
+      EXPECT_TRUE(gap == 0.0 || gap >= 1.0 / 4096.0 * (1.0 - 1e-9))
+        << name << ": points " << i - 1 << " and " << i << " lie " << gap << " apart";
+    }
+  }
+}
+
 TEST(TransferPresets, WindowLevelMovesAndScalesAboutTheRampCentre)
 {
   const se::TransferPoints points{ "test",
