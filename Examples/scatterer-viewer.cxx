@@ -215,7 +215,12 @@ int ParseArgs(int argc, char* argv[], Options& o)
   CLI::Option* record = scatterer_examples::AddValueOption(
     app, "--record", "FILE", "record the session's interaction events to FILE", store(o.Record));
   CLI::Option* output = scatterer_examples::AddValueOption(app, "--output", "FILE.png",
-    "after playing the events, write the last frame and exit", store(o.Output));
+    "after playing the events, write the last frame and exit",
+    [&o](const std::string& v)
+    {
+      scatterer_examples::RequirePngPath("--output", v);
+      o.Output = v;
+    });
   scatterer_examples::AddValueOption(app, "--preset", "NAME",
     "transfer-function preset to start with (p cycles them in the window);\n"
     "default: ct-head for CT in Hounsfield units, auto otherwise\n" +
@@ -616,6 +621,20 @@ bool ReadEvents(const std::string& path, std::string& events, std::string& error
   std::stringstream ss;
   ss << in.rdbuf();
   events = ss.str();
+  // What vtkInteractorEventRecorder writes begins with its stream version; anything else
+  // (a folder, another file) played nothing, silently.
+  if (!in.good() && !in.eof())
+  {
+    error = "cannot read events from '" + path + "'";
+    return false;
+  }
+  if (events.rfind("# StreamVersion", 0) != 0)
+  {
+    error = "'" + path +
+      "' is not a recording of interaction events (it does not begin with "
+      "'# StreamVersion', as --record writes it)";
+    return false;
+  }
   return true;
 }
 
@@ -659,6 +678,13 @@ int main(int argc, char* argv[])
   if (!options.PlayEvents.empty() && !ReadEvents(options.PlayEvents, events, error))
   {
     std::cerr << "scatterer-viewer: " << error << "\n";
+    return 1;
+  }
+  // The recording's file too: VTK's recorder only says it cannot open it, and the
+  // session went on unrecorded.
+  if (!options.Record.empty() && !std::ofstream(options.Record, std::ios::app))
+  {
+    std::cerr << "scatterer-viewer: cannot write the recording to '" << options.Record << "'.\n";
     return 1;
   }
 

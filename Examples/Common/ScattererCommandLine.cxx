@@ -22,6 +22,14 @@ void ThrowUsageError(const std::string& message)
   throw CLI::ValidationError(message);
 }
 
+void RequirePngPath(const std::string& option, const std::string& path)
+{
+  if (path.size() < 5 || path.substr(path.size() - 4) != ".png")
+  {
+    ThrowUsageError(option + " must name a .png file, got '" + path + "'");
+  }
+}
+
 void ThrowConflict(const std::string& a, const std::string& b, const std::string& why)
 {
   ThrowUsageError(a + " and " + b + " cannot be combined: " + why);

@@ -46,6 +46,10 @@ CLI::Option* AddValueOption(CLI::App& app, const std::string& name, const std::s
 /** Ends parsing with a usage error: "<program>: @p message", exit status 2. */
 [[noreturn]] void ThrowUsageError(const std::string& message);
 
+/** ThrowUsageError unless @p path names a .png file (the PNG writers write PNG whatever
+ * the name says): "@p option must name a .png file". */
+void RequirePngPath(const std::string& option, const std::string& path);
+
 /** A usage error for two options that contradict each other: "A and B cannot be combined: why". */
 [[noreturn]] void ThrowConflict(const std::string& a, const std::string& b, const std::string& why);
 

@@ -171,10 +171,7 @@ int ParseRenderOptions(int argc, char* argv[], RenderOptions& o)
   AddValueOption(app, "--output", "FILE.png", "image to write (default ct-head.png)",
     [&o](const std::string& v)
     {
-      if (v.size() < 5 || v.substr(v.size() - 4) != ".png")
-      {
-        ThrowUsageError("--output must name a .png file, got '" + v + "'");
-      }
+      RequirePngPath("--output", v);
       o.Output = v;
     });
   AddValueOption(app, "--size", "WxH", "window size, 16..8192 each (default 512x512)",

@@ -751,6 +751,30 @@ TEST_F(Cli, ViewerUnknownPresetIsAUsageError)
   EXPECT_TRUE(Contains(r.Output, "ct-bone")) << r.Output;
 }
 
+// The viewer's files are checked before the display, each with a message: an --output
+// that is not a .png (PNG bytes were written under any name), --play-events that are not
+// a recording (nothing was played, silently), a --record file that cannot be written (the
+// session went on unrecorded).
+TEST_F(Cli, ViewerRefusesFilesItCannotUse)
+{
+  std::ofstream(this->Dir / "garbage.log") << "not events\n";
+  const std::string garbage = (this->Dir / "garbage.log").string();
+  const Result jpg = RunProgram(SCATTERER_VIEWER_EXE, { "--test", "--output", "frame.jpg" });
+  EXPECT_EQ(jpg.Status, 2) << jpg.Output;
+  EXPECT_TRUE(Contains(jpg.Output, "must name a .png file")) << jpg.Output;
+  for (const std::string& events : { garbage, this->Dir.string() })
+  {
+    const Result r = RunProgram(SCATTERER_VIEWER_EXE,
+      { "--play-events", events, "--output", this->Png("events.png") }, "env -u DISPLAY");
+    EXPECT_EQ(r.Status, 1) << r.Output;
+    EXPECT_TRUE(Contains(r.Output, "is not a recording")) << r.Output;
+  }
+  const Result record = RunProgram(SCATTERER_VIEWER_EXE,
+    { "--record", (this->Dir / "no-such-dir" / "r.log").string() }, "env -u DISPLAY");
+  EXPECT_EQ(record.Status, 1) << record.Output;
+  EXPECT_TRUE(Contains(record.Output, "cannot write the recording")) << record.Output;
+}
+
 // Options that contradict each other (one would be silently ignored or overridden)
 // are refused with exit status 2 and a message naming both. The input is missing and
 // there is no display: should a case wrongly pass, the run ends at once with status 1.
