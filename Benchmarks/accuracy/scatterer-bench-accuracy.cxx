@@ -17,6 +17,7 @@
 
 #include "Common/ScattererCtHeadScene.h"
 #include "Common/ScattererMapperSetup.h"
+#include "Common/ScattererNumbers.h"
 #include "scatterer_reference/Metrics.h"
 #include "scatterer_reference/PathTracer.h"
 
@@ -377,15 +378,32 @@ int main(int argc, char* argv[])
   std::string out = "accuracy-benchmark",
               scenes = "ct-head,ct-head-light-kit,shell-plate,shell-plate-point,dense-ball", only,
               peerPython, peerScript;
+  // Numbers as the example programs take them (strict, in range): --size 0x0 aborted in
+  // the metrics, and --frames abc ran one frame.
+  std::string why;
+  const auto refused = [&why](const std::string& option, const char* value)
+  {
+    std::cerr << "scatterer-bench-accuracy: " << option << " '" << value << "': " << why << "\n";
+    return 2;
+  };
   for (int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
     if (a == "--frames" && i + 1 < argc)
-      frames = std::max(1, std::atoi(argv[++i]));
-    else if (a == "--size" && i + 1 < argc && std::sscanf(argv[++i], "%dx%d", &width, &height) == 2)
-      ;
+    {
+      if (!scatterer_examples::ParseInt(argv[++i], 1, 1000, frames, why))
+        return refused(a, argv[i]);
+    }
+    else if (a == "--size" && i + 1 < argc)
+    {
+      if (!scatterer_examples::ParseSize(argv[++i], width, height, why))
+        return refused(a, argv[i]);
+    }
     else if (a == "--spp" && i + 1 < argc)
-      spp = std::max(1, std::atoi(argv[++i]));
+    {
+      if (!scatterer_examples::ParseInt(argv[++i], 1, 1 << 20, spp, why))
+        return refused(a, argv[i]);
+    }
     else if (a == "--scenes" && i + 1 < argc)
       scenes = argv[++i];
     else if (a == "--configs" && i + 1 < argc)

@@ -19,6 +19,7 @@
 // machines without a display.
 #include "Common/ScattererCtHeadScene.h"
 #include "Common/ScattererMapperSetup.h"
+#include "Common/ScattererNumbers.h"
 #include "Common/ScattererScreenshot.h"
 
 #ifdef SCATTERER_BENCH_EGL
@@ -165,13 +166,27 @@ int main(int argc, char* argv[])
   int frames = 5, width = 512, height = 512, resample[3] = { 0, 0, 0 };
   std::string out = "render-benchmark", only;
   bool append = false, sliceSweep = false;
+  // Numbers as the example programs take them (strict, in range): --size -5x-5 and
+  // --frames abc ran anyway.
+  std::string why;
+  const auto refused = [&why](const std::string& option, const char* value)
+  {
+    std::cerr << "scatterer-bench-render: " << option << " '" << value << "': " << why << "\n";
+    return 2;
+  };
   for (int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
     if (a == "--frames" && i + 1 < argc)
-      frames = std::max(1, std::atoi(argv[++i]));
-    else if (a == "--size" && i + 1 < argc && std::sscanf(argv[++i], "%dx%d", &width, &height) == 2)
-      ;
+    {
+      if (!scatterer_examples::ParseInt(argv[++i], 1, 1000, frames, why))
+        return refused(a, argv[i]);
+    }
+    else if (a == "--size" && i + 1 < argc)
+    {
+      if (!scatterer_examples::ParseSize(argv[++i], width, height, why))
+        return refused(a, argv[i]);
+    }
     else if (a == "--resample" && i + 1 < argc &&
       std::sscanf(argv[++i], "%dx%dx%d", &resample[0], &resample[1], &resample[2]) == 3)
       ;
