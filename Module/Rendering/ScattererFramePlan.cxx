@@ -105,13 +105,12 @@ std::string DroppedMaterials(
         : " more stay unlit.");
 }
 
-// A vtkMultiVolume: each input as the ray caster composites it (one scalar through its
-// volume's 1D transfer functions), or why it cannot be lit.
 // Does VTK's ray caster multiply a step's opacity by a gradient opacity that is below 1
 // somewhere (a 1D transfer function with a gradient opacity function set and not
-// disabled)? VTK looks the function up as it stands (vtkPiecewiseFunction::GetTable),
-// so one with no nodes gives 0 everywhere; with nodes it is their linear interpolation,
-// held at the ends, and below 1 somewhere exactly when some node is.
+// disabled)? VTK looks the function up as it stands (vtkPiecewiseFunction::GetTable): with
+// nodes it is their linear interpolation, held at the ends, and below 1 somewhere exactly
+// when some node is. One with no nodes VTK fills with a ramp from 0 when it first draws
+// it; until then it counts as hiding everything (the next frame takes the ramp).
 bool HidesByGradient(vtkVolumeProperty* property)
 {
   if (property->GetTransferFunctionMode() != vtkVolumeProperty::TF_1D ||
@@ -136,6 +135,8 @@ bool HidesByGradient(vtkVolumeProperty* property)
   return false;
 }
 
+// A vtkMultiVolume: each input as the ray caster composites it (one scalar through its
+// volume's 1D transfer functions), or why it cannot be lit.
 std::string PlanParts(const VolumeSource& source, FramePlan& plan)
 {
   if (source.Parts.size() > static_cast<size_t>(vtkScattererTransportVolume::Inputs::kMaxParts))

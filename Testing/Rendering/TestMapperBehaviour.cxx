@@ -126,6 +126,20 @@ struct Scene
     return image;
   }
 
+  // Renders twice: the mapper must say once that it renders as stock, in a warning
+  // that contains @p says, and draw exactly the stock mapper's picture.
+  void ExpectStockWithOneWarning(const std::string& says)
+  {
+    vtkNew<vtkTest::ErrorObserver> warnings;
+    this->Mapper->AddObserver(vtkCommand::WarningEvent, warnings);
+    const auto first = this->Render();
+    this->Render();
+    EXPECT_EQ(WarningCount(warnings), 1u);
+    EXPECT_NE(LastWarning(warnings).find(says), std::string::npos) << LastWarning(warnings);
+    EXPECT_EQ(MaxDifference(first, this->RenderStock()), 0);
+    this->Mapper->RemoveObserver(warnings);
+  }
+
   // The illumination GLSL currently on the volume's shader property.
   std::string InstalledGLSL()
   {
@@ -206,16 +220,9 @@ TEST(MapperBehaviour, NoLightMeansNoIlluminationCodeAndStockPixels)
 TEST(MapperBehaviour, OtherBlendModesRenderAsStockWithOneWarning)
 {
   Scene scene;
-  vtkNew<vtkTest::ErrorObserver> warnings;
-  scene.Mapper->AddObserver(vtkCommand::WarningEvent, warnings);
   scene.Mapper->SetBlendModeToMaximumIntensity();
   scene.Stock->SetBlendModeToMaximumIntensity();
-  const auto first = scene.Render();
-  scene.Render();
-  EXPECT_EQ(WarningCount(warnings), 1u);
-  EXPECT_NE(LastWarning(warnings).find("maximum intensity"), std::string::npos)
-    << LastWarning(warnings);
-  EXPECT_EQ(MaxDifference(first, scene.RenderStock()), 0);
+  scene.ExpectStockWithOneWarning("maximum intensity");
 }
 
 TEST(MapperBehaviour, MultiComponentDataInPerSampleModeRendersAsStockWithOneWarning)
@@ -236,13 +243,7 @@ TEST(MapperBehaviour, MultiComponentDataInPerSampleModeRendersAsStockWithOneWarn
   scene.Mapper->SetInputData(la);
   scene.Stock->SetInputData(la);
   scene.Mapper->SetIlluminationMode(vtkScattererTemplateVolumeMapper::PER_SAMPLE);
-  vtkNew<vtkTest::ErrorObserver> warnings;
-  scene.Mapper->AddObserver(vtkCommand::WarningEvent, warnings);
-  const auto first = scene.Render();
-  scene.Render();
-  EXPECT_EQ(WarningCount(warnings), 1u);
-  EXPECT_NE(LastWarning(warnings).find("per-sample"), std::string::npos) << LastWarning(warnings);
-  EXPECT_EQ(MaxDifference(first, scene.RenderStock()), 0);
+  scene.ExpectStockWithOneWarning("per-sample");
 }
 
 // The per-sample photon test reads the voxels as they are, so matter the picture hides
@@ -279,14 +280,7 @@ TEST(MapperBehaviour, HiddenMatterInPerSampleModeRendersAsStockWithOneWarning)
       scene.Property->SetGradientOpacity(gradientOpacity);
     }
     scene.Mapper->SetIlluminationMode(vtkScattererTemplateVolumeMapper::PER_SAMPLE);
-    vtkNew<vtkTest::ErrorObserver> warnings;
-    scene.Mapper->AddObserver(vtkCommand::WarningEvent, warnings);
-    const auto first = scene.Render();
-    scene.Render();
-    EXPECT_EQ(WarningCount(warnings), 1u);
-    EXPECT_NE(LastWarning(warnings).find(hide + " in per-sample mode"), std::string::npos)
-      << LastWarning(warnings);
-    EXPECT_EQ(MaxDifference(first, scene.RenderStock()), 0);
+    scene.ExpectStockWithOneWarning(hide + " in per-sample mode");
     if (hide == "cropping")
     {
       // Cropped matter meant to cast shadows (a piece's ghost voxels): lit.
@@ -307,22 +301,17 @@ TEST(MapperBehaviour, PerSampleLightsMatterAtTheDataMaximum)
   const int n = 48;
   const auto render = [n](bool voxelAbove, bool stock)
   {
-    auto image = vtkSmartPointer<vtkImageData>::New();
-    image->SetDimensions(n, n, n);
-    image->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
-    auto* p = static_cast<unsigned char*>(image->GetScalarPointer());
-    for (int k = 0; k < n; ++k)
-      for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i)
+    auto image = scatterer_testing::MakeComponentVolume(n, 1,
+      [n, voxelAbove](int i, int j, int k, int) -> unsigned char
+      {
+        const double r2 =
+          (i - 24.0) * (i - 24.0) + (j - 24.0) * (j - 24.0) + (k - 30.0) * (k - 30.0);
+        if (voxelAbove && i == 0 && j == 0 && k == n - 1)
         {
-          const double r2 =
-            (i - 24.0) * (i - 24.0) + (j - 24.0) * (j - 24.0) + (k - 30.0) * (k - 30.0);
-          *p++ = r2 <= 64.0 ? 200 : (k >= 4 && k <= 6 ? 100 : 0);
+          return 255;
         }
-    if (voxelAbove)
-    {
-      *static_cast<unsigned char*>(image->GetScalarPointer(0, 0, n - 1)) = 255;
-    }
+        return r2 <= 64.0 ? 200 : (k >= 4 && k <= 6 ? 100 : 0);
+      });
     vtkNew<vtkVolumeProperty> property;
     vtkNew<vtkPiecewiseFunction> opacity;
     opacity->AddPoint(0, 0.0);
@@ -369,16 +358,9 @@ TEST(MapperBehaviour, DerivationRangeWithoutMatterRendersAsStockAndSaysWhy)
 {
   Scene scene;
   scene.Mapper->SetMaterialDerivationRange(2, 5);
-  vtkNew<vtkTest::ErrorObserver> warnings;
-  scene.Mapper->AddObserver(vtkCommand::WarningEvent, warnings);
-  const auto first = scene.Render();
-  scene.Render();
-  EXPECT_EQ(WarningCount(warnings), 1u);
-  EXPECT_NE(LastWarning(warnings).find("derivation range [2, 5]"), std::string::npos)
-    << LastWarning(warnings);
+  scene.ExpectStockWithOneWarning("derivation range [2, 5]");
   EXPECT_NE(scene.Mapper->GetLastShaderFeatures().find("derivation range"), std::string::npos)
     << scene.Mapper->GetLastShaderFeatures();
-  EXPECT_EQ(MaxDifference(first, scene.RenderStock()), 0);
 }
 
 TEST(MapperBehaviour, UniformOnlyChangesDoNotRebuildTheShader)
