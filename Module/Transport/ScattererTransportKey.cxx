@@ -87,7 +87,12 @@ struct PlacementWithoutTranslation
 };
 }
 
-std::uint64_t MediumKey(const vtkScattererTransportVolume::Inputs& in)
+namespace
+{
+// The medium's fingerprint with the placement already split (TransportKey needs it for
+// its positional lights too: split once a frame, not twice).
+std::uint64_t MediumKeyWith(
+  const vtkScattererTransportVolume::Inputs& in, const PlacementWithoutTranslation& placement)
 {
   Fingerprint f;
   f.Add(in.Volume);
@@ -124,7 +129,6 @@ std::uint64_t MediumKey(const vtkScattererTransportVolume::Inputs& in)
   // is keyed where it acts: the clipping planes, which stay in the world, as planes in
   // texture coordinates; positional lights by where they lie from the volume
   // (TransportKey).
-  const PlacementWithoutTranslation placement(in);
   f.Add(placement.Matrix, 16);
   f.Add(in.TexToDataset, 16);
   f.Add(in.TexToIndex, 16);
@@ -141,15 +145,21 @@ std::uint64_t MediumKey(const vtkScattererTransportVolume::Inputs& in)
   }
   return f.Value();
 }
+}
+
+std::uint64_t MediumKey(const vtkScattererTransportVolume::Inputs& in)
+{
+  return MediumKeyWith(in, PlacementWithoutTranslation(in));
+}
 
 std::uint64_t TransportKey(const vtkScattererTransportVolume::Inputs& in)
 {
+  const PlacementWithoutTranslation placement(in);
   Fingerprint f;
-  f.Add(MediumKey(in));
+  f.Add(MediumKeyWith(in, placement));
   f.Add(in.MultipleScattering);
   f.Add(in.DiffusionIterations);
   f.Add(in.CoarseDimLights);
-  const PlacementWithoutTranslation placement(in);
   for (const auto& l : in.Lights)
   {
     f.Add(l.Positional);

@@ -1039,7 +1039,6 @@ TEST(TransportVolume, MovesRebuildOnlyWhatTheyChange)
   vtkScattererTransportVolume* transport = slab.Transport;
   const int first = transport->GetBuildCount();
   const int firstMedium = transport->GetMediumBuildCount();
-  const auto render = [&]() { window->Render(); };
   const auto light = [&]()
   { return transport->ReadLight(vtkOpenGLRenderWindow::SafeDownCast(window)); };
 
@@ -1050,13 +1049,13 @@ TEST(TransportVolume, MovesRebuildOnlyWhatTheyChange)
   scene.Light->GetFocalPoint(focal);
   scene.Light->SetPosition(position[0] + 3, position[1] - 2, position[2] + 5);
   scene.Light->SetFocalPoint(focal[0] + 3, focal[1] - 2, focal[2] + 5);
-  render();
+  window->Render();
   EXPECT_EQ(transport->GetBuildCount(), first) << "a directional light's position rebuilt it";
 
   // The volume moved under a directional light, no clipping: nothing to rebuild.
   const std::vector<float> before = light();
   scene.Volume->SetPosition(7, -3, 2);
-  render();
+  window->Render();
   EXPECT_EQ(transport->GetBuildCount(), first) << "a volume moved rebuilt its light";
   EXPECT_EQ(transport->GetMediumBuildCount(), firstMedium) << "a volume moved drew its medium";
   EXPECT_EQ(light(), before);
@@ -1067,11 +1066,11 @@ TEST(TransportVolume, MovesRebuildOnlyWhatTheyChange)
   plane->SetOrigin(c + 7, c - 3, c + 2);
   plane->SetNormal(-1, 0, 0);
   scene.Mapper->AddClippingPlane(plane);
-  render();
+  window->Render();
   const int clipped = transport->GetMediumBuildCount();
   EXPECT_EQ(clipped, firstMedium + 1) << "a clipping plane added was not seen";
   scene.Volume->SetPosition(4, -3, 2);
-  render();
+  window->Render();
   EXPECT_EQ(transport->GetMediumBuildCount(), clipped + 1)
     << "a volume moved under a clipping plane kept its old cut";
   scene.Mapper->RemoveAllClippingPlanes();
@@ -1079,10 +1078,10 @@ TEST(TransportVolume, MovesRebuildOnlyWhatTheyChange)
   // A positional light stays in the world: a move lights the volume from elsewhere.
   scene.Light->SetPositional(true);
   scene.Light->SetConeAngle(180);
-  render();
+  window->Render();
   const int positional = transport->GetBuildCount();
   scene.Volume->SetPosition(4, 0, 2);
-  render();
+  window->Render();
   EXPECT_EQ(transport->GetBuildCount(), positional + 1)
     << "a volume moved under a positional light kept its old light";
   EXPECT_EQ(transport->GetMediumBuildCount(), clipped + 2) << "the clipping plane's removal";
