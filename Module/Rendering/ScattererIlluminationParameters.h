@@ -11,6 +11,8 @@
 
 #include "scatterer/IlluminationSettings.h"
 
+#include <algorithm>
+
 namespace scatterer_render
 {
 namespace il = scatterer::illumination;
@@ -51,7 +53,13 @@ struct IlluminationParameters
    * @p dims points, or for the whole volume when it is a piece of one. */
   int TransportScaleFor(const int dims[3], bool interactive) const
   {
-    const int* whole = this->WholeDimensions[0] > 0 ? this->WholeDimensions : dims;
+    // A piece is never larger than the whole it belongs to: a whole set too small
+    // (a stale setting) still keeps the piece within the voxel budget.
+    int whole[3];
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      whole[axis] = std::max(this->WholeDimensions[axis], dims[axis]);
+    }
     const int still =
       il::transportScaleFor(this->TransportScale, whole, this->MaximumTransportVoxels);
     return interactive ? il::interactiveTransportScaleFor(

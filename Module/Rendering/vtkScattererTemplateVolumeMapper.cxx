@@ -94,28 +94,39 @@ vtkScattererTemplateVolumeMapper::vtkScattererTemplateVolumeMapper()
 
 vtkScattererTemplateVolumeMapper::~vtkScattererTemplateVolumeMapper() = default;
 
-void vtkScattererTemplateVolumeMapper::AddScalarRangeMaterial(
-  double lo, double hi, double refractiveIndex, double r, double g, double b)
+namespace
 {
+/// Says what is wrong with a material's arguments, naming the method the user called;
+/// empty when they are usable. The index range is the physics' own rule
+/// (scatterer::Material::validate), checked here so that a bad material is refused when
+/// added, not at render time.
+std::string MaterialArgumentsProblem(
+  const char* method, double lo, double hi, double refractiveIndex, double r, double g, double b)
+{
+  std::ostringstream problem;
   const double values[] = { lo, hi, refractiveIndex, r, g, b };
   for (double v : values)
   {
     if (!std::isfinite(v))
     {
-      vtkErrorMacro("AddScalarRangeMaterial: every argument must be finite; material ignored.");
-      return;
+      problem << method << ": every argument must be finite; material ignored.";
+      return problem.str();
     }
   }
-  // The index range is the physics' own rule (scatterer::Material::validate), checked
-  // here so that a bad material is refused when added, not at render time.
   if (hi < lo || refractiveIndex < scatterer::kMinRefractiveIndex ||
     refractiveIndex > scatterer::kMaxRefractiveIndex)
   {
-    vtkErrorMacro("AddScalarRangeMaterial: needs lo <= hi and a refractive index in ["
-      << scatterer::kMinRefractiveIndex << ", " << scatterer::kMaxRefractiveIndex << "] (got ["
-      << lo << ", " << hi << "], n = " << refractiveIndex << "); material ignored.");
-    return;
+    problem << method << ": needs lo <= hi and a refractive index in ["
+            << scatterer::kMinRefractiveIndex << ", " << scatterer::kMaxRefractiveIndex
+            << "] (got [" << lo << ", " << hi << "], n = " << refractiveIndex
+            << "); material ignored.";
   }
+  return problem.str();
+}
+
+scatterer_scene::RequestedMaterial MakeMaterial(
+  double lo, double hi, double refractiveIndex, double r, double g, double b)
+{
   scatterer_scene::RequestedMaterial m;
   m.Lo = lo;
   m.Hi = hi;
@@ -123,19 +134,42 @@ void vtkScattererTemplateVolumeMapper::AddScalarRangeMaterial(
   m.Color[0] = std::min(std::max(r, 0.0), 1.0);
   m.Color[1] = std::min(std::max(g, 0.0), 1.0);
   m.Color[2] = std::min(std::max(b, 0.0), 1.0);
-  this->Internals->Requested.push_back(m);
+  return m;
+}
+}
+
+void vtkScattererTemplateVolumeMapper::AddScalarRangeMaterial(
+  double lo, double hi, double refractiveIndex, double r, double g, double b)
+{
+  const std::string problem =
+    MaterialArgumentsProblem("AddScalarRangeMaterial", lo, hi, refractiveIndex, r, g, b);
+  if (!problem.empty())
+  {
+    vtkErrorMacro(<< problem);
+    return;
+  }
+  this->Internals->Requested.push_back(MakeMaterial(lo, hi, refractiveIndex, r, g, b));
   this->IlluminationTime.Modified();
 }
 
 void vtkScattererTemplateVolumeMapper::AddLabelMaterial(
   int label, double refractiveIndex, double r, double g, double b)
 {
-  this->AddScalarRangeMaterial(label - 0.5, label + 0.5, refractiveIndex, r, g, b);
-  if (!this->Internals->Requested.empty() && this->Internals->Requested.back().Lo == label - 0.5)
+  // A label's material is the half-open range around its integer value.
+  const double lo = label - 0.5;
+  const double hi = label + 0.5;
+  const std::string problem =
+    MaterialArgumentsProblem("AddLabelMaterial", lo, hi, refractiveIndex, r, g, b);
+  if (!problem.empty())
   {
-    this->Internals->Requested.back().IsLabel = true;
-    this->Internals->Requested.back().Label = label;
+    vtkErrorMacro(<< problem);
+    return;
   }
+  scatterer_scene::RequestedMaterial m = MakeMaterial(lo, hi, refractiveIndex, r, g, b);
+  m.IsLabel = true;
+  m.Label = label;
+  this->Internals->Requested.push_back(m);
+  this->IlluminationTime.Modified();
 }
 
 void vtkScattererTemplateVolumeMapper::AddMaterialsFromLabelTransferFunctions(
@@ -280,7 +314,15 @@ double vtkScattererTemplateVolumeMapper::GetIlluminationReach(const double spaci
 
 void vtkScattererTemplateVolumeMapper::SetWholeDimensions(int nx, int ny, int nz)
 {
-  const int dims[3] = { std::max(0, nx), std::max(0, ny), std::max(0, nz) };
+  const bool unset = nx == 0 && ny == 0 && nz == 0;
+  if (!unset && (nx < 1 || ny < 1 || nz < 1))
+  {
+    vtkErrorMacro("SetWholeDimensions: needs three point counts of at least 1, or 0 0 0 for "
+                  "\"the input is the whole volume\" (got "
+      << nx << " " << ny << " " << nz << "); ignored.");
+    return;
+  }
+  const int dims[3] = { nx, ny, nz };
   if (std::equal(dims, dims + 3, this->WholeDimensions))
   {
     return;

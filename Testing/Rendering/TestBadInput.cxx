@@ -162,7 +162,25 @@ TEST(BadInput, AbsurdParametersAreClampedOrRejectedWithTheirName)
     EXPECT_TRUE(capture.Has("a refractive index in [0.0001, 10000]")) << n << capture.Window->Text;
     capture.Window->Text.clear();
   }
+  // A label's error names the method called, and a refused label leaves the material
+  // added before it a range material.
+  stage.Mapper->AddScalarRangeMaterial(2.5, 3.5, 1.4, 1, 1, 1);
+  stage.Mapper->AddLabelMaterial(3, -1.0, 1, 1, 1);
+  EXPECT_TRUE(capture.Has("AddLabelMaterial: needs lo <= hi and a refractive index"))
+    << capture.Window->Text;
+  EXPECT_EQ(stage.Mapper->GetNumberOfRequestedMaterials(), 1);
+  stage.Mapper->RemoveAllMaterials();
   EXPECT_EQ(stage.Mapper->GetNumberOfRequestedMaterials(), 0);
+  // A whole volume's dimensions: three point counts or none.
+  stage.Mapper->SetWholeDimensions(64, 0, 64);
+  EXPECT_TRUE(capture.Has("SetWholeDimensions: needs three point counts")) << capture.Window->Text;
+  EXPECT_EQ(stage.Mapper->GetWholeDimensions()[0], 0);
+  // A whole set smaller than the piece (a stale setting) keeps the piece in the budget.
+  const int large[3] = { 511, 511, 215 };
+  const int own = stage.Mapper->GetEffectiveTransportScale(large, false);
+  stage.Mapper->SetWholeDimensions(2, 2, 2);
+  EXPECT_EQ(stage.Mapper->GetEffectiveTransportScale(large, false), own);
+  stage.Mapper->SetWholeDimensions(0, 0, 0);
   // Radii at the ends of the setter's range render lit in both modes.
   stage.Mapper->SetTemplateRadius(std::numeric_limits<double>::infinity());
   EXPECT_TRUE(capture.Has("SetTemplateRadius: inf is outside")) << capture.Window->Text;
