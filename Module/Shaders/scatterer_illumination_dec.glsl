@@ -55,6 +55,20 @@ vec3 st_compressHighlights(vec3 received)
   return mix(light, st_knee + (light - st_knee) / (1.0 + (light - st_knee) / (1.0 - st_knee)),
     step(vec3(st_knee), light));
 }
+
+// The light a sample takes from a transport read. With VTK's gradient shading on (Shade),
+// the read is a visibility: the shaded colour (which already carries the lights'
+// intensities, clamped to 1 by VTK) times the read over an unoccluded white sample's light
+// (st_unlitNorm). That ratio must not pass through the knee: compressed toward 1, it fell
+// as 1 / intensity, and a brighter light drew a darker picture (intensity 1000: black).
+vec3 st_shownLight(vec3 received)
+{
+//ST::IF PHONG
+  return st_exposure * received;
+//ST::ELSE
+  return st_compressHighlights(received);
+//ST::ENDIF
+}
 //ST::IF GROUPED
 
 // Samples that share a light read: the light at the far end of the group, read by

@@ -7,10 +7,10 @@
     // geometrically, L_k = L_0 (L_n / L_0)^(k/n): the optical depth interpolated
     // linearly, exact where the light falls off as Beer-Lambert's exp(-tau) along the
     // ray (docs/model.md, "Fewer light reads"). The reads are compressed
-    // (st_compressHighlights) as they are taken, once a group rather than per sample.
+    // (st_shownLight) as they are taken, once a group rather than per sample.
     vec3 st_lightStart = st_lightEnd;
     st_lightEnd =
-      st_compressHighlights(st_transportRead(g_dataPos + float(@LIGHT_STRIDE@) * g_dirStep));
+      st_shownLight(st_transportRead(g_dataPos + float(@LIGHT_STRIDE@) * g_dirStep));
     vec3 st_lightStep =
       st_strideRoot(max(st_lightEnd, st_lightFloor) / max(st_lightStart, st_lightFloor));
     vec3 st_light = max(st_lightStart, st_lightFloor);
@@ -114,7 +114,7 @@
 //ST::IF GROUPED
         st_F = st_light;
 //ST::ELSE
-        st_F = st_compressHighlights(st_transportRead(g_dataPos));
+        st_F = st_shownLight(st_transportRead(g_dataPos));
 //ST::ENDIF
 //ST::ENDIF
 //ST::IF PERSAMPLE

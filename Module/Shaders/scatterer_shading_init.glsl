@@ -21,7 +21,7 @@
     st_datasetToTransport * in_textureDatasetMatrix[0] * inverse(in_cellToPoint[0]);
 //ST::ENDIF
 //ST::IF GROUPED
-  st_lightEnd = st_compressHighlights(st_transportRead(g_dataPos));
+  st_lightEnd = st_shownLight(st_transportRead(g_dataPos));
 //ST::ENDIF
 //ST::ENDIF
 //ST::IF PERSAMPLE

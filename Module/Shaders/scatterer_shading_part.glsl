@@ -17,7 +17,7 @@
           {
           g_srcColor = computeColor(texPos, scalar, g_srcColor.a, in_colorTransferFunc_@PART@[0],
             in_volume[@PART@], @PART@);
-          st_F = st_compressHighlights(st_transportRead(g_dataPos));
+          st_F = st_shownLight(st_transportRead(g_dataPos));
 //ST::IF PHONG
           g_srcColor.rgb = clamp(g_srcColor.rgb * st_F * st_unlitNorm, 0.0, 1.0);
 //ST::ELSE

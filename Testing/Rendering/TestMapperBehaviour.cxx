@@ -673,3 +673,29 @@ TEST(MapperBehaviour, LightKitLightsTheVolumeWithEveryLight)
   EXPECT_LT(MeanBrightness(key) + 2.0, MeanBrightness(all))
     << "the kit's other lights add no light";
 }
+
+TEST(MapperBehaviour, WithShadeOnABrighterLightNeverDarkensThePicture)
+{
+  // Shade on: VTK's Phong colour (which carries the light's intensity, clamped to 1)
+  // times the light's visibility. The visibility is a ratio and must not pass through the
+  // highlight knee, which made it fall as 1 / intensity (intensity 1000: a black frame).
+  for (int mode :
+    { vtkScattererTemplateVolumeMapper::TRANSPORT, vtkScattererTemplateVolumeMapper::PER_SAMPLE })
+  {
+    Scene scene;
+    scene.Mapper->SetIlluminationMode(mode);
+    scene.Property->ShadeOn();
+    vtkLight* light = vtkLight::SafeDownCast(scene.Renderer->GetLights()->GetItemAsObject(0));
+    double previous = 0.0;
+    for (double intensity : { 1.0, 2.0, 10.0, 1000.0 })
+    {
+      light->SetIntensity(intensity);
+      const double mean = MeanBrightness(scene.Render());
+      EXPECT_GE(mean, previous - 0.5) << "mode " << mode << ", intensity " << intensity;
+      previous = mean;
+    }
+    const double stock = MeanBrightness(scene.RenderStock());
+    std::cout << "mode " << mode << ": intensity 1000 " << previous << ", stock " << stock << "\n";
+    EXPECT_GT(previous, 0.5 * stock) << "mode " << mode;
+  }
+}
