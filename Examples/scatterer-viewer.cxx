@@ -59,6 +59,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -67,6 +68,42 @@
 
 namespace
 {
+/**
+ * Do @p a and @p b name the same file, however spelled ("./mine.log" and "mine.log")?
+ * Both existing: std::filesystem::equivalent (also through links); otherwise their
+ * weakly_canonical forms (the file to be written need not exist yet). "-" (the built-in
+ * recording) is no file.
+ */
+bool SameFile(const std::string& a, const std::string& b)
+{
+  namespace fs = std::filesystem;
+  if (a == b)
+  {
+    return true;
+  }
+  if (a == "-" || b == "-")
+  {
+    return false;
+  }
+  std::error_code ec;
+  if (fs::exists(a, ec) && fs::exists(b, ec))
+  {
+    const bool same = fs::equivalent(a, b, ec);
+    if (!ec)
+    {
+      return same;
+    }
+  }
+  ec.clear();
+  const fs::path ca = fs::weakly_canonical(a, ec);
+  if (ec)
+  {
+    return false;
+  }
+  const fs::path cb = fs::weakly_canonical(b, ec);
+  return !ec && ca == cb;
+}
+
 // The built-in recording (--play-events -): a rotation drag, key presses (shadows off
 // and on, per-sample mode, quality down), a zoom drag (right button), a pan
 // (shift + left), back to transport mode. Format: vtkInteractorEventRecorder stream 1.1
@@ -253,10 +290,13 @@ int ParseArgs(int argc, char* argv[], Options& o)
         "that run ends after the played events, so there is no session to record";
       scatterer_examples::RejectTogether(record, output, nothingToRecord);
       scatterer_examples::RejectTogether(record, test, nothingToRecord);
-      if (record->count() > 0 && play->count() > 0 && o.Record == o.PlayEvents)
+      if (record->count() > 0 && play->count() > 0 && SameFile(o.Record, o.PlayEvents))
       {
         scatterer_examples::ThrowConflict("--record", "--play-events",
-          "both name '" + o.Record + "'; the recording would overwrite the events being played");
+          (o.Record == o.PlayEvents
+              ? "both name '" + o.Record + "'"
+              : "'" + o.Record + "' and '" + o.PlayEvents + "' name the same file") +
+            "; the recording would overwrite the events being played");
       }
     });
   const int parsed = scatterer_examples::ParseCommandLine(app, argc, argv);

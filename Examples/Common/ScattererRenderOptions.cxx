@@ -108,13 +108,39 @@ CLI::Option* AddDouble(CLI::App& app, const std::string& name, const std::string
     });
 }
 
+/** A setting's number as --help shows it: integers exactly (1048576, not %g's 1.04858e+06,
+ * which the integer parser refuses), reals as messages show them. */
+std::string SettingNumber(int value)
+{
+  return std::to_string(value);
+}
+
+std::string SettingNumber(double value)
+{
+  return FormatNumber(value);
+}
+
 /** The help text of a mapper setting: @p what, then a line "lo..hi (default d)" from the record. */
 template <typename T>
 std::string SettingHelp(const std::string& what, const scatterer::illumination::Setting<T>& setting)
 {
-  return what + "\n" + FormatNumber(setting.Minimum) + ".." + FormatNumber(setting.Maximum) +
-    " (default " + FormatNumber(setting.Default) + ")";
+  return what + "\n" + SettingNumber(setting.Minimum) + ".." + SettingNumber(setting.Maximum) +
+    " (default " + SettingNumber(setting.Default) + ")";
 }
+
+/** "--a, --b or --c": the names of @p options, for the help's conflict rules. */
+std::string OptionNames(const std::vector<CLI::Option*>& options)
+{
+  std::string names;
+  for (size_t i = 0; i < options.size(); ++i)
+  {
+    names += (i == 0 ? "" : i + 1 == options.size() ? " or " : ", ") + options[i]->get_name();
+  }
+  return names;
+}
+
+/** The template radius --radius accepts, world units. */
+constexpr double kMinimumRadius = 1e-9, kMaximumRadius = 1e9;
 
 /** --name N for an integer setting of the mapper: its range and default from the record. */
 CLI::Option* AddSetting(CLI::App& app, const std::string& name, const std::string& valueName,
@@ -132,27 +158,31 @@ CLI::Option* AddSetting(CLI::App& app, const std::string& name, const std::strin
     app, name, valueName, setting.Minimum, setting.Maximum, SettingHelp(what, setting), target);
 }
 
-const char* const Footer =
-  "Numbers are plain decimal (5, 0.25, 1e-3, a leading + or -). Refused with a message:\n"
-  "hexadecimal (0x10), spaces around the number, trailing characters, inf, nan,\n"
-  "fractions or exponents where an integer is asked for, and values too small for a\n"
-  "normal double (magnitude below 2.2e-308, e.g. 1e-320; write 0 for zero).\n"
-  "Every option takes --opt VALUE or --opt=VALUE, at most once (again only with the same\n"
-  "value). Options that contradict each other are refused, naming both: a template\n"
-  "illumination option with --mode stock or phong; a per-sample option (--thin, --blend,\n"
-  "--interval, --threshold, --long-range) with transport illumination (the default); a\n"
-  "transport option (--transport-scale, --multiple-scattering) with --illumination\n"
-  "per-sample; --scene auto without --input.\n"
-  "Volumes that cannot give a picture are refused before rendering, with a message\n"
-  "naming the file and the reason: no finite value, fewer than 2 points along an axis,\n"
-  "a spacing that is not a finite number > 0 (or beyond what single precision\n"
-  "resolves), an origin that is not finite (or too far out), a constant volume\n"
-  "(--scene auto), and a volume whose values the transfer function leaves transparent.\n"
-  "The input is read and checked before the display is needed.\n"
-  "Exit status: 0 the image was written; 1 the volume cannot be read or is refused, no X\n"
-  "display, VTK reported an error while rendering, the frame came out blank (background\n"
-  "only) although the volume has visible values, or the PNG cannot be written (no image\n"
-  "is written on failure); 2 a bad command line (usage error).\n";
+/** The help's footer, the conflict rules naming the options the parser refuses. */
+std::string Footer(
+  const std::vector<CLI::Option*>& perSample, const std::vector<CLI::Option*>& transport)
+{
+  return "Numbers are plain decimal (5, 0.25, 1e-3, a leading + or -). Refused with a message:\n"
+         "hexadecimal (0x10), spaces around the number, trailing characters, inf, nan,\n"
+         "fractions or exponents where an integer is asked for, and values too small for a\n"
+         "normal double (magnitude below 2.2e-308, e.g. 1e-320; write 0 for zero).\n"
+         "Every option takes --opt VALUE or --opt=VALUE, at most once (again only with the same\n"
+         "value). Options that contradict each other are refused, naming both: a template\n"
+         "illumination option with --mode stock or phong; a per-sample option\n(" +
+    OptionNames(perSample) + ")\nwith transport illumination (the default); a transport option\n(" +
+    OptionNames(transport) +
+    ") with\n--illumination per-sample; --scene auto without --input.\n"
+    "Volumes that cannot give a picture are refused before rendering, with a message\n"
+    "naming the file and the reason: no finite value, fewer than 2 points along an axis,\n"
+    "a spacing that is not a finite number > 0 (or beyond what single precision\n"
+    "resolves), an origin that is not finite (or too far out), a constant volume\n"
+    "(--scene auto), and a volume whose values the transfer function leaves transparent.\n"
+    "The input is read and checked before the display is needed.\n"
+    "Exit status: 0 the image was written; 1 the volume cannot be read or is refused, no X\n"
+    "display, VTK reported an error while rendering, the frame came out blank (background\n"
+    "only) although the volume has visible values, or the PNG cannot be written (no image\n"
+    "is written on failure); 2 a bad command line (usage error).\n";
+}
 }
 
 int ParseRenderOptions(int argc, char* argv[], RenderOptions& o)
@@ -162,7 +192,6 @@ int ParseRenderOptions(int argc, char* argv[], RenderOptions& o)
       CtHeadPath() + ", made by scripts/prepare-data.sh in the source tree.",
     "scatterer-render");
   SetUpCommandLine(app);
-  app.footer(Footer);
 
   CLI::Option* input = AddValueOption(app, "--input", "PATH",
     "volume: .mhd/.mha, .nii/.nii.gz, .vti, .nrrd/.nhdr, a DICOM folder or one file of a series\n"
@@ -192,9 +221,10 @@ int ParseRenderOptions(int argc, char* argv[], RenderOptions& o)
     "           illumination (default)",
     o.Mode);
   CLI::Option* scene = AddChoice(app, "--scene", "SCENE", { "auto", "ct-head" },
-    "for --input volumes: auto (fit camera, ramp transfer function,\n"
-    "default) or ct-head (the benchmark scene's camera, light and\n"
-    "transfer functions; for CT data in HU)",
+    "for --input volumes: auto (fit camera, headlight, the transfer\n"
+    "function from the histogram: the ct-head one for CT in HU, else\n"
+    "Otsu thresholds; default) or ct-head (the benchmark scene's camera,\n"
+    "light and transfer functions; for CT data in HU)",
     o.Scene);
   app.add_flag("--json", o.Json, "print one JSON object: settings, frame times (ms), output path");
 
@@ -224,9 +254,9 @@ int ParseRenderOptions(int argc, char* argv[], RenderOptions& o)
     }));
   CLI::Option* illumination =
     AddChoice(app, "--illumination", "transport|per-sample", { "transport", "per-sample" },
-      "light transport volume built on the GPU and read by every\n"
-      "sample (transport, default), or the paper's local photon test\n"
-      "in the shader at every sample",
+      "light transport volume built on the GPU and read once per 1, 2\n"
+      "or 4 samples (transport, default), or the paper's local photon\n"
+      "test in the shader every --interval samples (per-sample)",
       o.Illumination);
   both.push_back(illumination);
   transport.push_back(AddSetting(app, "--transport-scale", "N", il::TransportScale,
@@ -244,10 +274,12 @@ int ParseRenderOptions(int argc, char* argv[], RenderOptions& o)
     app, "--templates", "N", il::TemplatesPerMaterial, "templates per material", o.Templates));
   perSample.push_back(AddSetting(app, "--interval", "N", il::IlluminationInterval,
     "per-sample: ray samples between photon evaluations", o.Interval));
-  both.push_back(AddDouble(app, "--radius", "R", 1e-9, 1e9,
-    "template radius in world units, > 0 (default 10 x spacing); per-sample:\nthe photon "
-    "test's reach; transport: only caps the in-scattering\nkernel, which visible matter "
-    "keeps far shorter",
+  both.push_back(AddDouble(app, "--radius", "R", kMinimumRadius, kMaximumRadius,
+    "template radius in world units, " + FormatNumber(kMinimumRadius) + ".." +
+      FormatNumber(kMaximumRadius) +
+      "\n(default 10 x spacing); per-sample: the photon "
+      "test's reach;\ntransport: only caps the in-scattering kernel, which visible\nmatter "
+      "keeps far shorter",
     o.Radius));
   perSample.push_back(AddSetting(app, "--threshold", "T", il::PhotonThreshold,
     "per-sample: photon-loop cut-off on transmittance x intensity", o.Threshold));
@@ -262,6 +294,7 @@ int ParseRenderOptions(int argc, char* argv[], RenderOptions& o)
       option->group(group);
     }
   }
+  app.footer(Footer(perSample, transport));
 
   // Combinations whose one part would be silently ignored are refused, naming both.
   app.callback(

@@ -11,9 +11,14 @@
  * Default (IlluminationMode Transport): a light transport volume is built on the
  * GPU from the ray caster's own volume texture whenever the data, transfer
  * function, lights or settings change (vtkScattererTransportVolume: a
- * Beer-Lambert sweep per light, then one template gather of them all), and every
- * ray sample reads it once. PerSample: the paper's local photon test in the shader
- * at every ray sample (occluders within the template radius only).
+ * Beer-Lambert sweep per light, then one template gather of them all), and the
+ * rays read it once per 4, 2 or 1 samples (light-stride: the most whose span fits in
+ * one transport texel, so 4 on the benchmark scene and 2 at VTK's automatic step of
+ * one voxel, as in ParaView; a vtkMultiVolume reads at every sample); the samples
+ * between two reads take the light interpolated between them (docs/rendering.md,
+ * "Fewer light reads").
+ * PerSample: the paper's local photon test in the shader every IlluminationInterval
+ * (4) samples (occluders within the template radius only).
  *
  * The work is injected into the stock ray caster as GLSL replacements on the
  * volume's shader property (Module/Shaders), so blend modes, cropping,
@@ -28,14 +33,23 @@
  * text changes.
  *
  * Illumination applies to composite blending of single-component scalars
- * (intensities or label maps) in one block, with or without a mask in transport
- * mode: a binary mask's masked-out matter neither shows nor casts shadow; with a
- * label-map mask each label's colour and opacity functions (vtkVolumeProperty
- * SetLabelColor / SetLabelScalarOpacity, labels 1..255) colour the picture and carry
- * the light. Other blend modes, multi-component data, a mask in per-sample mode,
- * multi-volumes, partitioned volumes, rectilinear grids, depth-pass and 2D
- * transfer functions render as the stock mapper does, with one warning if
- * illumination was asked for.
+ * (intensities or label maps), with or without a mask in transport mode: a binary
+ * mask's masked-out matter neither shows nor casts shadow; with a label-map mask
+ * each label's colour and opacity functions (vtkVolumeProperty SetLabelColor /
+ * SetLabelScalarOpacity, labels 1..255) colour the picture and carry the light. The
+ * transport mode also lights multi-component scalars, 2D transfer functions, a
+ * vtkMultiVolume (up to 4 inputs), clipping planes, cropping and partitioned volumes
+ * whose whole fits one 3D texture. These render as the stock mapper does, with one
+ * warning per reason if illumination was asked for: other blend modes, rectilinear
+ * grids, the depth pass; in per-sample mode multi-component scalars, 2D transfer
+ * functions, a mask, clipping planes, cropping (unless CroppedMatterCastsShadows),
+ * gradient opacity that hides matter and a vtkMultiVolume; in transport mode a
+ * partitioned volume whose whole does not fit one 3D texture, a label-map mask with
+ * several components, a 2D transfer function or gradient opacity, a 2D transfer
+ * function or gradient opacity on several components, and a vtkMultiVolume of
+ * more than 4 inputs or with an input that has several components, a 2D transfer
+ * function or gradient opacity (docs/rendering.md, "When the mapper renders as the
+ * stock mapper").
  *
  * Parameters that only feed shader uniforms or the transport volume do not
  * call Modified(): the stock mapper rebuilds its shader whenever the mapper's
@@ -47,10 +61,14 @@
  * Progress (vtkCommand::ProgressEvent): a frame that rebuilds the illumination
  * reports 0 when the templates are regenerated, 0.1 when they are done, then the
  * light transport volume's GPU stages up to 0.95 (the medium's passes when the
- * medium changed, a quarter of each light's sweep, the light it brings, the source,
- * each diffusion iteration, the gather; only while an observer is present, because
- * each report waits for the GPU), and 1 after the image, with the progress text "Scatterer
- * illumination" (the mapper's executive also reports 0 and 1, untitled, when its pipeline runs).
+ * medium changed; each light's sweep, in 2 reports for a directional light swept
+ * line by line (vtkScattererTransportVolume SweepLinesInParallel, the default) and
+ * in 4 for a light swept slice by slice (positional lights); the light it brings;
+ * the source; each diffusion iteration (8); the gather: 13 reports for one
+ * directional light, 14 when the medium changed, 15 and 16 for one positional light;
+ * only while an observer is present, because each report waits for the GPU), and 1
+ * after the image, with the progress text "Scatterer illumination" (the mapper's
+ * executive also reports 0 and 1, untitled, when its pipeline runs).
  * Frames that rebuild nothing report nothing.
  *
  * @sa vtkOpenGLGPUVolumeRayCastMapper
@@ -267,14 +285,18 @@ public:
 
   /**
    * How far, in the volume's data units, the illumination of a sample reads the
-   * volume locally. Per sample: the template radius (TemplateRadius, or 10 x the
-   * mean of `spacing` when that is 0), times LongRangeMultiple with the thin-part
-   * check. Transport: the largest of the template radius (the kernel), two diffusion
-   * voxels (the ambient occlusion) and one diffusion voxel per diffusion iteration
-   * (multiple scattering), a diffusion voxel being max(4, scale) x the largest spacing
-   * with scale the dragging frames' (GetEffectiveTransportScale for the whole
-   * dimensions; InteractiveTransportScale when they are not set); plus one
-   * transport voxel. Ghost layers this wide give a piece of a distributed volume the
+   * volume locally (0 with IlluminationEnabled off). Per sample: the template radius
+   * (TemplateRadius, or 10 x the mean of `spacing` when that is 0), times
+   * LongRangeMultiple with shadows and the thin-part check on. Transport: the largest
+   * of the template radius (the kernel), two diffusion voxels (the ambient occlusion)
+   * and, with MultipleScattering above 0, one diffusion voxel per diffusion iteration
+   * (8); plus one transport voxel. A diffusion voxel is max(4, 2 x the still frames'
+   * scale) x the largest spacing; a transport voxel is the larger of the still and
+   * dragging frames' scales x the largest spacing (scales from
+   * GetEffectiveTransportScale for the whole dimensions; TransportScale and
+   * InteractiveTransportScale when they are not set). Defaults at spacing 1:
+   * max(10, 8, 8 x 4) + 4 = 36; 14 with MultipleScattering 0; 52 at TransportScale 3
+   * (diffusion voxel 6). Ghost layers this wide give a piece of a distributed volume the
    * in-scattering, multiple scattering and ambient light of the whole volume; shadows
    * cast from farther away (other pieces) come in through the light exchange
    * (SetLightExchange; docs/paraview.md).
@@ -286,14 +308,18 @@ public:
   {
     AUTOMATIC =
       scatterer::illumination::Automatic, ///< only the code paths the scene needs (default)
-    AS_REQUESTED = scatterer::illumination::AsRequested ///< every switched-on effect, needed or not
+    AS_REQUESTED =
+      scatterer::illumination::AsRequested ///< every switched-on effect that can act, needed or not
   };
   ///@{
   /**
    * Automatic: the shader carries only what the scene needs (one material: no
    * boundary or bleeding code; a long-range multiple of 1: no thin-part code;
    * no positional light: no positional code). AsRequested: every effect that is
-   * switched on, for users who want to compare or who change scenes often.
+   * switched on and can act, for users who want to compare or who change scenes
+   * often: boundary still needs 2 or more materials, bleeding is left out for
+   * dependent components, the thin-part check (with shadows) and template blending
+   * are per-sample only.
    */
   vtkScattererSetSettingMacro(ShaderPathSelection, int);
   vtkGetMacro(ShaderPathSelection, int);
@@ -349,7 +375,8 @@ public:
    * Per sample: ray samples between two photon evaluations (default 4; 1 =
    * every sample). Illumination varies on the scale of the template radius, so
    * a ray reuses it for a few samples (always re-evaluated when the material
-   * changes). The transport mode reads its light at every sample.
+   * changes). The transport mode reads its light once per 4, 2 or 1 samples (the
+   * most whose span fits in one transport texel) and interpolates between the reads.
    */
   vtkScattererSetSettingMacro(IlluminationInterval, int);
   vtkGetMacro(IlluminationInterval, int);

@@ -10,7 +10,8 @@
  * templates (single scattering, colour bleeding, Snell rescaling) into one RGB
  * texture: the light each point receives. The light scattered once is then spread by a diffusion
  * solve on a coarser grid (multiple scattering) and added. The ray caster reads
- * that texture once per sample. The equations are in
+ * that texture once per 4, 2 or 1 samples (the most whose span fits in one of its
+ * texels) and interpolates the samples between two reads. The equations are in
  * scatterer_transport_*.glsl beside it and docs/model.md.
  *
  * Both passes are fragment passes into textures (vtkOpenGLFramebufferObject,
@@ -295,12 +296,16 @@ public:
 
   /**
    * Called during a rebuild with the fraction of its passes done, (0, 1]: after the
-   * medium's passes (when the medium changed), each quarter of each light's sweep, the
-   * light each brings, the source, each diffusion iteration and the gather (which adds
-   * the diffused and the ambient light). The passes run on the GPU
-   * asynchronously, so with a callback set the build waits for each stage (glFinish)
-   * before reporting it: the fraction then says what the GPU has done, not what was
-   * queued. Unset (the default), nothing waits. The mapper forwards it as its
+   * medium's passes (when the medium changed), each light's sweep (twice for a
+   * directional light swept line by line, SweepLinesInParallel on, the default; four
+   * times, a quarter of its slices each, for a light swept slice by slice, as
+   * positional lights are), the light each brings, the source, each diffusion
+   * iteration and the gather (which adds the diffused and the ambient light). One
+   * directional light and 8 iterations: 13 calls, 14 when the medium changed; one
+   * positional light: 15 and 16. The fraction counts every sweep as 4 calls. The
+   * passes run on the GPU asynchronously, so with a callback set the build waits for
+   * each stage (glFinish) before reporting it: the fraction then says what the GPU has
+   * done, not what was queued. Unset (the default), nothing waits. The mapper forwards it as its
    * ProgressEvent.
    */
   void SetProgressCallback(std::function<void(double)> callback);

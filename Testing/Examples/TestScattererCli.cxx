@@ -534,6 +534,29 @@ TEST_F(Cli, HelpSaysWhichNumbersAreRefused)
   }
 }
 
+// --help printed integer settings with %g ("1.04858e+06", which the integer parser
+// refuses) and listed two of the three transport options refused with
+// --illumination per-sample.
+TEST_F(Cli, HelpShowsNumbersAndConflictsAsTheParserTakesThem)
+{
+  const Result r = Render({ "--help" });
+  EXPECT_EQ(r.Status, 0) << r.Output;
+  EXPECT_TRUE(Contains(r.Output, "0..2147483647 (default 1048576)")) << r.Output;
+  EXPECT_FALSE(Contains(r.Output, "1.04858e+06")) << r.Output;
+  EXPECT_TRUE(
+    Contains(r.Output, "(--transport-scale, --max-transport-voxels or --multiple-scattering)"))
+    << r.Output;
+  EXPECT_TRUE(Contains(r.Output, "1e-09..1e+09")) << r.Output;
+  // The default as printed is taken back; with per-sample illumination it is refused.
+  const Result typed = RunProgram(SCATTERER_RENDER_EXE,
+    { "--max-transport-voxels", "1048576", "--illumination", "per-sample", "--input",
+      (this->Dir / "missing.mhd").string() },
+    "env -u DISPLAY");
+  EXPECT_EQ(typed.Status, 2) << typed.Output;
+  EXPECT_TRUE(Contains(typed.Output, "--max-transport-voxels and --illumination per-sample"))
+    << typed.Output;
+}
+
 // ---------------------------------------------------------------------------------------
 // Input before display (both programs): a missing file on a machine without a
 // display is reported as the missing file, not as "no X display".
@@ -788,6 +811,8 @@ TEST_F(Cli, ConflictingOptionsAreRefused)
   };
   const std::string missing = (this->Dir / "missing.mhd").string();
   const std::string log = (this->Dir / "session.log").string();
+  const std::string drag = this->WriteDragRecording();
+  const std::string dotDrag = (this->Dir / "." / "drag.log").string();
   const Case cases[] = {
     { SCATTERER_RENDER_EXE, { "--mode", "stock", "--photons", "8" },
       { "--photons", "--mode stock" } },
@@ -802,6 +827,13 @@ TEST_F(Cli, ConflictingOptionsAreRefused)
     { SCATTERER_VIEWER_EXE, { "--test", "--record", log }, { "--record", "--test" } },
     { SCATTERER_VIEWER_EXE, { "--record", log, "--play-events", log },
       { "--record", "--play-events" } },
+    // The same file spelled another way (./) was accepted, and the recording overwrote
+    // the events: an existing file, and one still to be written.
+    { SCATTERER_VIEWER_EXE, { "--record", dotDrag, "--play-events", drag },
+      { "--record", "--play-events", "name the same file" } },
+    { SCATTERER_VIEWER_EXE,
+      { "--record", (this->Dir / "." / "session.log").string(), "--play-events", log },
+      { "--record", "--play-events", "name the same file" } },
     { SCATTERER_VIEWER_EXE, { "--size", "96x96", "--size", "128x128" }, { "--size", "'96x96'" } },
   };
   for (const auto& c : cases)
