@@ -406,6 +406,12 @@ def progress_and_interaction_one_rank(args):
     check(scattering[0] == blending[0] + 1 and scattering[1] == blending[1],
           "multiple scattering rebuilt the light and not the medium: %s -> %s"
           % (blending[:2], scattering[:2]))
+    # Ghost layers: one piece has none to change (it re-executed, uploaded and rebuilt all).
+    display.ScattererGhostLayers = 3
+    view.StillRender()
+    ghosts = scenes.rank0_info(display)["ScattererIlluminationBuildInfo"]
+    check(ghosts[:2] == scattering[:2], "ghost layers on one piece rebuilt nothing: %s -> %s"
+          % (scattering[:2], ghosts[:2]))
 
 
 def vector_component_one_rank(args):
@@ -456,12 +462,69 @@ def vector_component_one_rank(args):
               % (part, same, STOCK_TOLERANCE))
 
 
+def animation_cache_one_rank(args):
+    """A time series played again from ParaView's animation cache ("Cache Geometry For
+    Animation"): each time step shows its own data. The representation handed the mapper
+    the step it executed last, so every cached step showed the last one."""
+    import numpy
+    from paraview.simple import (ColorBy, GetAnimationScene, GetOpacityTransferFunction,
+                                 GetSettingsProxy, Show, XMLImageDataReader)
+    from vtkmodules.util.numpy_support import numpy_to_vtk
+    from vtkmodules.vtkCommonDataModel import vtkImageData
+    from vtkmodules.vtkIOXML import vtkXMLImageDataWriter
+    n = 32
+    z, y, x = numpy.mgrid[0:n, 0:n, 0:n].astype(float)
+    paths = []
+    for step in range(3):  # a ball that moves along x, one step per file
+        ball = (x - 9.0 - 7.0 * step) ** 2 + (y - 15.5) ** 2 + (z - 15.5) ** 2 <= 36.0
+        image = vtkImageData()
+        image.SetDimensions(n, n, n)
+        array = numpy_to_vtk(numpy.where(ball, 200.0, 0.0).astype(numpy.float32).ravel(), deep=1)
+        array.SetName("a")
+        image.GetPointData().SetScalars(array)
+        paths.append(os.path.join(args.out_dir, "animation-%d.vti" % step))
+        writer = vtkXMLImageDataWriter()
+        writer.SetFileName(paths[-1])
+        writer.SetInputData(image)
+        writer.Write()
+    GetSettingsProxy("GeneralSettings").CacheGeometryForAnimation = 1
+    reader = XMLImageDataReader(FileName=paths)
+    view = scenes.make_view(SIZE, None)
+    view.CameraPosition = [15.5, -80.0, 15.5]
+    view.CameraFocalPoint = [15.5, 15.5, 15.5]
+    view.CameraViewUp = [0.0, 0.0, 1.0]
+    display = Show(reader, view)
+    display.SetRepresentationType("Scatterer Volume")
+    ColorBy(display, ("POINTS", "a"))
+    display.SetScalarBarVisibility(view, False)
+    GetOpacityTransferFunction("a").Points = [0, 0, .5, 0, 100, 0, .5, 0, 200, .8, .5, 0]
+    scene = GetAnimationScene()
+    scene.UpdateAnimationUsingDataTimeSteps()
+    times = list(reader.TimestepValues)
+    pictures = {}
+    for playing in ("first", "cached"):
+        for time in times:
+            scene.AnimationTime = time
+            view.StillRender()
+            pictures[(playing, time)] = os.path.join(args.out_dir, "animation-%s-%g.png"
+                                                     % (playing, time))
+            scenes.save(view, pictures[(playing, time)], SIZE)
+    apart = compare.difference(pictures[("first", times[0])], pictures[("first", times[-1])])
+    check(apart["mean"] >= 1.0, "control: the first and last steps differ (mean %.2f >= 1)"
+          % apart["mean"])
+    for time in times:
+        again = compare.difference(pictures[("first", time)], pictures[("cached", time)])
+        check(within(again, {"mean": 0.05, "fraction_over_32": 0.0}),
+              "time %g played from the cache shows its own step: %s" % (time, again))
+
+
 CASES = {"ct-head-one-rank": ct_head_one_rank, "ct-head-ranks": ct_head_ranks,
          "split-shadow-one-rank": split_shadow_one_rank,
          "split-shadow-two-ranks": split_shadow_two_ranks,
          "long-shadow-one-rank": long_shadow_one_rank, "long-shadow-ranks": long_shadow_ranks,
          "progress-interaction-one-rank": progress_and_interaction_one_rank,
-         "vector-component-one-rank": vector_component_one_rank}
+         "vector-component-one-rank": vector_component_one_rank,
+         "animation-cache-one-rank": animation_cache_one_rank}
 
 parser = argparse.ArgumentParser(description="pvbatch tests of the ScattererTemplate plugin")
 parser.add_argument("case", choices=sorted(CASES))

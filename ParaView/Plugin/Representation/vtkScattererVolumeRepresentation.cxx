@@ -141,8 +141,16 @@ void vtkScattererVolumeRepresentation::SetGhostLayers(int layers)
   if (layers != this->GhostLayers)
   {
     this->GhostLayers = layers;
-    // The pieces ask upstream again (RequestUpdateExtent).
-    this->MarkModified();
+    // Split data's pieces ask upstream again (RequestUpdateExtent); one piece has no
+    // ghost layers to change, and re-executing would upload and redraw it for nothing.
+    if (this->Pieces > 1)
+    {
+      this->MarkModified();
+    }
+    else
+    {
+      this->Modified();
+    }
   }
 }
 
@@ -379,9 +387,23 @@ int vtkScattererVolumeRepresentation::RequestData(
  * the magnitude, alone, under its own name; remade only when the data or the choice
  * changes.
  */
+vtkImageData* vtkScattererVolumeRepresentation::DeliveredPiece()
+{
+  vtkDataObject* connected = this->VolumeMapper->GetInputDataObject(0, 0);
+  if (connected && connected == this->VectorInput)
+  {
+    return this->VectorSource;
+  }
+  if (auto* image = vtkImageData::SafeDownCast(connected))
+  {
+    return image;
+  }
+  return vtkImageData::SafeDownCast(this->Cache);
+}
+
 void vtkScattererVolumeRepresentation::UpdateMapperInput()
 {
-  auto* image = vtkImageData::SafeDownCast(this->Cache);
+  vtkImageData* image = this->DeliveredPiece();
   vtkVolumeMapper* mapper = this->VolumeMapper;
   vtkColorTransferFunction* colors =
     this->Property ? this->Property->GetRGBTransferFunction(0) : nullptr;
@@ -394,10 +416,11 @@ void vtkScattererVolumeRepresentation::UpdateMapperInput()
   if (components < 2 || !array->GetName())
   {
     this->VectorInput = nullptr;
+    this->VectorSource = nullptr;
     this->VectorInputKey->Clear();
-    if (mapper->GetInputDataObject(0, 0) != this->Cache)
+    if (image && mapper->GetInputDataObject(0, 0) != image)
     {
-      mapper->SetInputDataObject(this->Cache);
+      mapper->SetInputDataObject(image);
     }
     return;
   }
@@ -438,6 +461,7 @@ void vtkScattererVolumeRepresentation::UpdateMapperInput()
       : static_cast<vtkDataSetAttributes*>(this->VectorInput->GetPointData());
     attributes->RemoveArray(array->GetName());
     attributes->AddArray(one);
+    this->VectorSource = image;
     this->VectorInputKey->Record(key);
   }
   if (mapper->GetInputDataObject(0, 0) != this->VectorInput)
@@ -492,7 +516,11 @@ void vtkScattererVolumeRepresentation::UpdateMapperParameters()
   // against 33). The planes are corrected for that, and both pieces move the plane by the
   // same hundredth of a voxel, so that a ray that runs in it lies well inside one piece
   // whatever the rounding. (The volume's outer faces keep their planes.)
-  auto* piece = vtkImageData::SafeDownCast(this->Cache);
+  vtkImageData* piece = this->DeliveredPiece();
+  if (!piece)
+  {
+    return;
+  }
   const double* spacing = piece->GetSpacing();
   const double* pieceBounds = piece->GetBounds();
   int dims[3];

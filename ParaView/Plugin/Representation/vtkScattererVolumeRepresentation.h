@@ -155,11 +155,20 @@ private:
   void ExchangeLight(vtkObject* caller, unsigned long event, void* callData);
 
   /**
-   * The image the mapper renders: the cache, or, where ParaView colours a multi-component
-   * array by one component or by its magnitude, one with that array as that component
-   * or magnitude alone.
+   * The image the mapper renders: the delivered piece, or, where ParaView colours a
+   * multi-component array by one component or by its magnitude, one with that array as
+   * that component or magnitude alone.
    */
   void UpdateMapperInput();
+
+  /**
+   * The piece this render shows: the one the view delivered, which the superclass's
+   * REQUEST_RENDER connects to the mapper just before UpdateMapperParameters. With
+   * "Cache Geometry For Animation" that is a cached time step's data, while the cache
+   * holds the step executed last. While the mapper shows the vector copy, what the copy
+   * was made from.
+   */
+  vtkImageData* DeliveredPiece();
 
   /** Ghost layers each piece asks for when the illumination reaches @p reach. */
   int GhostLevelsFor(double reach) const;
@@ -193,7 +202,8 @@ private:
   unsigned long ExchangeObserver = 0;
   double LightExchangeInfo[4] = { 0, 0, 0, 0 };
   double IlluminationBuildInfo[8] = { 0, 0, 0, 0, 0, 0, 0, 0 };
-  vtkSmartPointer<vtkImageData> VectorInput; // the cache with its array's component or magnitude
+  vtkSmartPointer<vtkImageData> VectorInput;  // the piece with its array's component or magnitude
+  vtkSmartPointer<vtkImageData> VectorSource; // the piece VectorInput was made from
   // what VectorInput was made from (a scatterer_render::ChangeKey, a private header)
   std::unique_ptr<scatterer_render::ChangeKey> VectorInputKey;
 };
