@@ -578,14 +578,16 @@ vtkVolumeProperty* FramePlanner::MaterialProperty(
 void FramePlanner::WarnUnassigned(
   vtkVolumeProperty* property, const double range[2], WarnOnce& warn, const FramePlan& plan)
 {
-  KeyWriter key;
-  key << plan.Scalars << '|' << plan.Scalars->GetMTime() << '|' << plan.MaterialComponent << '|'
-      << property->GetScalarOpacity(0)->GetMTime() << '|' << range[0] << ',' << range[1];
+  KeyWriter materials;
   for (const auto& m : plan.Materials.Materials)
   {
-    key << '|' << m.Physics.selector.lo << ',' << m.Physics.selector.hi << ','
-        << m.Physics.selector.label;
+    materials << '|' << m.Physics.selector.lo << ',' << m.Physics.selector.hi << ','
+              << m.Physics.selector.label;
   }
+  KeyWriter key;
+  key << plan.Scalars << '|' << plan.Scalars->GetMTime() << '|' << plan.MaterialComponent << '|'
+      << property->GetScalarOpacity(0)->GetMTime() << '|' << range[0] << ',' << range[1]
+      << materials.Key();
   if (!this->UnassignedKey.Differs(key.Key()))
   {
     return;
@@ -599,7 +601,8 @@ void FramePlanner::WarnUnassigned(
     what << unassigned.Count << " visible voxels (e.g. scalar value " << unassigned.Example
          << ") belong to none of the requested materials: they are drawn and cast shadows, "
             "but receive light without in-scattering (add a material for them to fix this).";
-    warn(what.str());
+    // Said once for these materials: the count changes with the data (a time series).
+    warn(what.str(), "unassigned" + materials.Key());
   }
 }
 

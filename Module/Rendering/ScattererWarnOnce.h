@@ -32,6 +32,19 @@ public:
     }
   }
 
+  /**
+   * Raises @p what on the owner once per @p topic: for a warning whose text carries
+   * numbers that change from frame to frame (a count of voxels in each time step), which
+   * would otherwise be said again at every change.
+   */
+  void operator()(const std::string& what, const std::string& topic)
+  {
+    if (this->Said.insert("topic:" + topic).second)
+    {
+      vtkWarningWithObjectMacro(this->Owner, << what);
+    }
+  }
+
 private:
   vtkObject* Owner;
   std::set<std::string> Said;
