@@ -22,6 +22,7 @@
 #include "ScattererTransportProgress.h"
 #include "ScattererTransportTables.h"
 #include "ScattererTransportTextures.h"
+#include "ScattererTransportUnits.h"
 
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -296,18 +297,21 @@ bool vtkScattererTransportVolume::Update(
   s.Context = window;
   s.SweepLinesInParallel = this->SweepLinesInParallel;
   s.Last = in;
+  // From here every length in the transport's own unit (ScattererTransportUnits.h).
+  scatterer_gpu::ToTransportUnits(s.Last, scatterer_gpu::TransportLengthUnit(in));
+  const Inputs& built = s.Last;
 
   // The stages: place the grid, compile the programs (once), allocate the light
   // texture, run the passes (the tables are uploaded with the medium's).
   // The grid lies on the volume texture, or on the box that holds a vtkMultiVolume's parts.
   int volumeDims[3];
-  in.GetGridSourceDims(volumeDims);
-  if (!s.Grid.Place(volumeDims, in.IndexOrigin, in.Downsample, in.TexToWorld))
+  built.GetGridSourceDims(volumeDims);
+  if (!s.Grid.Place(volumeDims, built.IndexOrigin, built.Downsample, built.TexToWorld))
   {
     why = "the volume's placement is degenerate (zero spacing or a singular matrix)";
     return false;
   }
-  const std::string variant = scatterer_gpu::TransportPrograms::Variant(in);
+  const std::string variant = scatterer_gpu::TransportPrograms::Variant(built);
   if (!s.Programs.IsCreated(variant))
   {
     if (!s.Programs.Create(window, variant, why))
@@ -317,11 +321,11 @@ bool vtkScattererTransportVolume::Update(
     s.Framebuffer->SetContext(window);
   }
   if (!s.Textures.AllocateFine(window, s.Grid.Dims,
-        scatterer_gpu::ExtinctionSampling::For(in.Downsample).UsesTexelMeans(), why))
+        scatterer_gpu::ExtinctionSampling::For(built.Downsample).UsesTexelMeans(), why))
   {
     return false;
   }
-  if (!s.RunPasses(in, this->SynchronousTiming, why))
+  if (!s.RunPasses(built, this->SynchronousTiming, why))
   {
     s.HasKey = false;
     return false;
