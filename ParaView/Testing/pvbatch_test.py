@@ -135,6 +135,12 @@ def ct_head_ranks(args):
     check(ranks > 1, "runs on several ranks (got %d)" % ranks)
     ours = os.path.join(args.out_dir, "ct-head-%dranks.png" % ranks)
     info = render(args.data, scenes.CT_HEAD_SCENE, "Scatterer Volume", ours)
+    # Three still frames of one scene: one exchange, one build. (The view hands the mapper
+    # its copy of the piece, which is the piece: another object for the same data was
+    # uploaded, exchanged and built again.)
+    once = (info["ScattererLightExchangeInfo"][0], info["ScattererIlluminationBuildInfo"][0])
+    check(once == (1, 1), "three still frames exchanged and built once: (exchanges, builds) %s"
+          % (once,))
     header = scenes.read_mhd_header(args.data)
     spacing = [float(v) for v in header["ElementSpacing"].split()]
     dims = [int(v) for v in header["DimSize"].split()]

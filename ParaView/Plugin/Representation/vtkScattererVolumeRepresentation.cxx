@@ -141,16 +141,9 @@ void vtkScattererVolumeRepresentation::SetGhostLayers(int layers)
   if (layers != this->GhostLayers)
   {
     this->GhostLayers = layers;
-    // Split data's pieces ask upstream again (RequestUpdateExtent); one piece has no
-    // ghost layers to change, and re-executing would upload and redraw it for nothing.
-    if (this->Pieces > 1)
-    {
-      this->MarkModified();
-    }
-    else
-    {
-      this->Modified();
-    }
+    // Split data's pieces ask upstream again (RequestUpdateExtent) where the layers they
+    // ask for change; otherwise re-executing would upload and redraw them for nothing.
+    this->SettingChanged();
   }
 }
 
@@ -387,6 +380,37 @@ int vtkScattererVolumeRepresentation::RequestData(
  * the magnitude, alone, under its own name; remade only when the data or the choice
  * changes.
  */
+namespace
+{
+// Whether @p a and @p b hold the same arrays on the same extent: the view's delivered
+// copy of the cache (several ranks) rather than another time step's data.
+bool SameData(vtkImageData* a, vtkImageData* b)
+{
+  const int* ea = a->GetExtent();
+  const int* eb = b->GetExtent();
+  if (!std::equal(ea, ea + 6, eb))
+  {
+    return false;
+  }
+  const auto same = [](vtkDataSetAttributes* x, vtkDataSetAttributes* y)
+  {
+    if (x->GetNumberOfArrays() != y->GetNumberOfArrays())
+    {
+      return false;
+    }
+    for (int i = 0; i < x->GetNumberOfArrays(); ++i)
+    {
+      if (x->GetAbstractArray(i) != y->GetAbstractArray(i))
+      {
+        return false;
+      }
+    }
+    return true;
+  };
+  return same(a->GetPointData(), b->GetPointData()) && same(a->GetCellData(), b->GetCellData());
+}
+}
+
 vtkImageData* vtkScattererVolumeRepresentation::DeliveredPiece()
 {
   vtkDataObject* connected = this->VolumeMapper->GetInputDataObject(0, 0);
@@ -394,11 +418,15 @@ vtkImageData* vtkScattererVolumeRepresentation::DeliveredPiece()
   {
     return this->VectorSource;
   }
-  if (auto* image = vtkImageData::SafeDownCast(connected))
+  auto* cache = vtkImageData::SafeDownCast(this->Cache);
+  auto* image = vtkImageData::SafeDownCast(connected);
+  // The view's copy of the cache is the cache: the mapper keeps the one object (another
+  // object, the same data, would be uploaded and its light built again).
+  if (!image || (cache && SameData(image, cache)))
   {
-    return image;
+    return cache;
   }
-  return vtkImageData::SafeDownCast(this->Cache);
+  return image;
 }
 
 void vtkScattererVolumeRepresentation::UpdateMapperInput()
