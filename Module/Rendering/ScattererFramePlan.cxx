@@ -105,13 +105,15 @@ std::string DroppedMaterials(
         : " more stay unlit.");
 }
 
-// Does VTK's ray caster multiply a step's opacity by a gradient opacity that is below 1
+// Does VTK's ray caster multiply a step's opacity by a gradient opacity that is not 1
 // somewhere (a 1D transfer function with a gradient opacity function set and not
 // disabled)? VTK looks the function up as it stands (vtkPiecewiseFunction::GetTable): with
-// nodes it is their linear interpolation, held at the ends, and below 1 somewhere exactly
-// when some node is. One with no nodes VTK fills with a ramp from 0 when it first draws
-// it; until then it counts as hiding everything (the next frame takes the ramp).
-bool HidesByGradient(vtkVolumeProperty* property)
+// nodes it is their linear interpolation, held at the ends when clamping (the default),
+// 0 beyond them when not; so not 1 somewhere exactly when some node is not 1 or clamping
+// is off. Above 1 it thickens the matter. One with no nodes VTK fills with a ramp from 0
+// when it first draws it; until then it counts as hiding everything (the next frame takes
+// the ramp).
+bool ChangesOpacityByGradient(vtkVolumeProperty* property)
 {
   if (property->GetTransferFunctionMode() != vtkVolumeProperty::TF_1D ||
     !property->HasGradientOpacity(0) || property->GetDisableGradientOpacity(0))
@@ -119,7 +121,7 @@ bool HidesByGradient(vtkVolumeProperty* property)
     return false;
   }
   vtkPiecewiseFunction* function = property->GetGradientOpacity(0);
-  if (function->GetSize() == 0)
+  if (function->GetSize() == 0 || !function->GetClamping())
   {
     return true;
   }
@@ -127,7 +129,7 @@ bool HidesByGradient(vtkVolumeProperty* property)
   {
     double node[4];
     function->GetNodeValue(i, node);
-    if (!(node[1] >= 1.0))
+    if (!(node[1] == 1.0))
     {
       return true;
     }
@@ -165,7 +167,7 @@ std::string PlanParts(const VolumeSource& source, FramePlan& plan)
     {
       return "2D transfer functions in a vtkMultiVolume";
     }
-    if (HidesByGradient(part.Volume->GetProperty()))
+    if (ChangesOpacityByGradient(part.Volume->GetProperty()))
     {
       return "gradient opacity in a vtkMultiVolume";
     }
@@ -212,7 +214,7 @@ std::string PlanComponents(vtkVolumeProperty* property, const VolumeSource& sour
     const std::string problem = Transfer2DProblem(property->GetTransferFunction2D());
     return problem.empty() ? "" : "this 2D transfer function (" + problem + ")";
   }
-  plan.GradientOpacity = HidesByGradient(property);
+  plan.GradientOpacity = ChangesOpacityByGradient(property);
   if (plan.GradientOpacity)
   {
     if (!parameters.Transport())

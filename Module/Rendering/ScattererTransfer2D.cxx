@@ -81,14 +81,18 @@ void TabulateGradientOpacity(const float* row, int width, vtkPiecewiseFunction* 
   {
     // Row y is read at the normalised magnitude (y + 0.5) / rows (its texel's centre), so
     // that the linear read between rows follows the function as VTK's finer table does.
-    const double gy = Clamped01(gradientOpacity->GetValue((y + 0.5) / rows * 0.25 * rangeWidth));
+    // Not clamped: VTK multiplies the step's opacity by the function's value as it is
+    // (above 1 it thickens the matter); the product is an opacity, at most 1.
+    const double gy =
+      std::max(gradientOpacity->GetValue((y + 0.5) / rows * 0.25 * rangeWidth), 0.0);
     for (int x = 0; x < width; ++x)
     {
       const float* in = row + 4 * static_cast<size_t>(x);
       float* out = medium.data() + 4 * (static_cast<size_t>(y) * width + x);
       std::copy(in, in + 3, out);
       const double alpha = -std::expm1(-static_cast<double>(in[3]) * step);
-      out[3] = static_cast<float>(scatterer::extinctionFromOpacity(gy * alpha, step));
+      out[3] =
+        static_cast<float>(scatterer::extinctionFromOpacity(std::min(gy * alpha, 1.0), step));
     }
   }
 }

@@ -33,7 +33,7 @@ void TabulateTransfer2D(
  * functions with a gradient opacity, as VTK 9.1's ray caster composites a step: the
  * scalar opacity corrected to the step, alpha = 1 - exp(-sigma_t step), times the
  * gradient opacity g at the magnitude, an extinction of
- *   sigma_t' = -ln(1 - g alpha) / step
+ *   sigma_t' = -ln(1 - min(g alpha, 1)) / step
  * (sigma_t where g = 1). @p row is the 1D medium (@p width entries of albedo rgb and
  * sigma_t per world unit); the magnitude axis gets @p rows rows of g over
  * [0, @p rangeWidth / 4], as VTK spans its gradient opacity table

@@ -44,12 +44,12 @@ class WarnOnce;
 constexpr int kMediumTableSize = 4096;
 
 /**
- * One row of the medium over [lo, hi] (kMediumTableSize entries of 4 floats): albedo rgb
+ * One row of the medium over [lo, hi] (@p entries of 4 floats): albedo rgb
  * from @p color (white when none), and sigma_t per world unit from @p opacity in VTK's
  * convention with @p unit the ScalarOpacityUnitDistance.
  */
 void TabulateMedium(float* row, vtkColorTransferFunction* color, vtkPiecewiseFunction* opacity,
-  double lo, double hi, double unit);
+  double lo, double hi, double unit, int entries = kMediumTableSize);
 
 /** What the transport reads of the mapper besides the plan (its public state). */
 struct TransportSource

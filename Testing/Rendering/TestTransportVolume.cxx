@@ -504,6 +504,55 @@ TEST(TransportVolume, GradientOpacityAttenuatesTheLightAsTheRayCasterShowsTheMat
   ASSERT_EQ(hidden.size(), half.size());
   EXPECT_GT(*std::min_element(hidden.begin(), hidden.end()), 0.999f)
     << "matter the gradient opacity hides casts a shadow";
+  // With clamping off, VTK's table is 0 beyond the last node (2): hidden inside (the
+  // faces' one-sided gradients, 2, stay visible, as in the ray caster).
+  vtkNew<vtkPiecewiseFunction> unclamped;
+  unclamped->AddPoint(0, 1.0);
+  unclamped->AddPoint(2, 1.0);
+  unclamped->ClampingOff();
+  const auto beyond = transmittance(unclamped);
+  ASSERT_EQ(beyond.size(), half.size());
+  EXPECT_GT(at(beyond, 4), 0.999f)
+    << "matter beyond an unclamped gradient opacity's nodes casts a shadow";
+  // Above 1 VTK thickens the matter: four steps of alpha 4 x 0.1.
+  vtkNew<vtkPiecewiseFunction> four;
+  four->AddPoint(0, 4.0);
+  four->AddPoint(100, 4.0);
+  const auto thick = transmittance(four);
+  ASSERT_EQ(thick.size(), half.size());
+  const double thickFactor = std::pow(1.0 - 0.4, 4.0);
+  EXPECT_NEAR(at(thick, 12) / at(thick, 16), thickFactor, 0.01 * thickFactor);
+
+  // A CT-like range (0 to 4000: VTK's gradient table spans a quarter of it) and matter of
+  // gentle gradient (2 a voxel) that a steep step of the function (0 up to 3, 1 from 4)
+  // hides: with 64 rows, a row spanned 16 units and the matter kept its whole shadow.
+  auto wide = vtkSmartPointer<vtkImageData>::New();
+  wide->SetDimensions(n, n, n);
+  wide->AllocateScalars(VTK_SHORT, 1);
+  auto* value = static_cast<short*>(wide->GetScalarPointer());
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+        *value++ = static_cast<short>(1000 + 2 * k);
+  wide->SetScalarComponentFromDouble(0, 0, 0, 0, 0.0);
+  wide->SetScalarComponentFromDouble(n - 1, n - 1, n - 1, 0, 4000.0);
+  TransportScene scene(wide, 0.1);
+  scene.Property->GetScalarOpacity()->RemoveAllPoints();
+  scene.Property->GetScalarOpacity()->AddPoint(0, 0.0);
+  scene.Property->GetScalarOpacity()->AddPoint(500, 0.0);
+  scene.Property->GetScalarOpacity()->AddPoint(600, 0.1);
+  scene.Property->GetScalarOpacity()->AddPoint(4000, 0.1);
+  vtkNew<vtkPiecewiseFunction> step;
+  step->AddPoint(0, 0.0);
+  step->AddPoint(3, 0.0);
+  step->AddPoint(4, 1.0);
+  scene.Property->SetGradientOpacity(step);
+  scene.Mapper->AutoAdjustSampleDistancesOff();
+  scene.Mapper->SetSampleDistance(1.0);
+  scene.SetDirectional(0, 0, 1);
+  const auto gentle = scene.Transmittance();
+  ASSERT_EQ(gentle.size(), half.size());
+  EXPECT_GT(at(gentle, 4), 0.99f) << "gentle matter a steep gradient opacity hides casts a shadow";
 }
 
 TEST(TransportVolume, SlabObliqueLightIsBeerLambert)
