@@ -330,6 +330,13 @@ std::string FramePlanner::Plan(vtkRenderer* ren, vtkVolume* vol, const VolumeSou
       "attenuation, cone angle or exponent (or volume property diffuse or ambient "
       "coefficient).");
   }
+  if (plan.Lights.Undefined > 0)
+  {
+    warn("Scatterer-template illumination ignores " + std::to_string(plan.Lights.Undefined) +
+      " switched-on light(s) whose direction is undefined (a directional light or spot whose "
+      "position is its focal point) or whose attenuation is not positive at every distance "
+      "(a positional light with a negative or all-zero attenuation value).");
+  }
   if (plan.Lights.Count() == 0)
   {
     return "no light is switched on with an intensity above 0";

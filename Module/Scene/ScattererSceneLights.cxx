@@ -80,15 +80,28 @@ LightSet CollectLights(vtkRenderer* renderer, vtkVolumeProperty* property)
       ++set.Skipped;
       continue;
     }
+    // A direction is needed by a directional light and by a spot (cone up to 90 degrees,
+    // below); a positional light's attenuation must be positive at every distance.
+    const double cone = light->GetConeAngle();
+    const bool spot = light->GetPositional() && cone <= 90.0;
+    const double* attenuation = light->GetAttenuationValues();
     double toLight[3] = { position[0] - focal[0], position[1] - focal[1], position[2] - focal[2] };
-    if (vtkMath::Normalize(toLight) == 0.0)
+    const bool noDirection = vtkMath::Normalize(toLight) == 0.0;
+    const bool badAttenuation = light->GetPositional() &&
+      (attenuation[0] < 0.0 || attenuation[1] < 0.0 || attenuation[2] < 0.0 ||
+        attenuation[0] + attenuation[1] + attenuation[2] <= 0.0);
+    if ((noDirection && (!light->GetPositional() || spot)) || badAttenuation)
     {
-      toLight[2] = 1.0;
+      ++set.Undefined;
+      continue;
+    }
+    if (noDirection)
+    {
+      toLight[2] = 1.0; // a point light: its direction is not read
     }
     const double intensity = light->GetIntensity();
     const double* diffuse = light->GetDiffuseColor();
     const double* ambient = light->GetAmbientColor();
-    const double* attenuation = light->GetAttenuationValues();
     for (int c = 0; c < 3; ++c)
     {
       set.FocalDirection.push_back(static_cast<float>(-toLight[c]));
@@ -103,10 +116,8 @@ LightSet CollectLights(vtkRenderer* renderer, vtkVolumeProperty* property)
     // VTK lights a positional light as a spot up to a cone of 90 degrees, its cone and
     // exponent applied (vtkVolumeShaderComposer: in_lightConeAngle <= 90), and above as a
     // point light.
-    const double cone = light->GetConeAngle();
-    set.ConeCos.push_back(light->GetPositional() && cone <= 90.0
-        ? static_cast<float>(std::cos(vtkMath::RadiansFromDegrees(cone)))
-        : -2.0f);
+    set.ConeCos.push_back(
+      spot ? static_cast<float>(std::cos(vtkMath::RadiansFromDegrees(cone))) : -2.0f);
     set.Exponent.push_back(static_cast<float>(light->GetExponent()));
     set.AnyPositional = set.AnyPositional || light->GetPositional();
   }

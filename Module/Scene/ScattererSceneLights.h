@@ -28,6 +28,10 @@ struct LightSet
   bool AnyPositional = false;
   int Skipped = 0;   ///< switched-on lights beyond the limit
   int NonFinite = 0; ///< switched-on lights left out for a NaN or infinite setting
+  /// switched-on lights left out for a direction they do not define (a directional light
+  /// or spot at its focal point) or an attenuation 1 / (a0 + a1 d + a2 d^2) that is not
+  /// positive at every distance (a positional light)
+  int Undefined = 0;
   int Count() const { return static_cast<int>(this->Positional.size()); }
 };
 
@@ -37,7 +41,8 @@ constexpr int kMaxLights = 6;
  * Collects the switched-on lights of @p renderer (call during rendering). A light whose
  * intensity, colours, position, focal point, attenuation, cone angle or exponent (or the
  * property's diffuse or ambient coefficient) is NaN or infinite would light every sample
- * NaN, a black frame: it is left out and counted (NonFinite).
+ * NaN, a black frame: it is left out and counted (NonFinite). So is one whose direction
+ * or attenuation is undefined (Undefined), which VTK's own shading draws black.
  */
 LightSet CollectLights(vtkRenderer* renderer, vtkVolumeProperty* property);
 }

@@ -275,3 +275,24 @@ TEST(BadInput, NonFiniteLightsAreLeftOutWithAWarning)
     << stage.Mapper->GetLastShaderFeatures();
   EXPECT_GT(scatterer_testing::MeanBrightness(none), 5.0) << "a black frame";
 }
+
+TEST(BadInput, LightsWithoutADirectionOrAPositiveAttenuationAreLeftOutWithAWarning)
+{
+  Capture capture;
+  Stage stage;
+  stage.Mapper->SetInputData(scatterer_testing::MakeShellBallPlate(32, VTK_UNSIGNED_CHAR));
+  const auto good = stage.Render();
+  ASSERT_GT(scatterer_testing::MeanBrightness(good), 5.0);
+  // A directional light at its focal point (it was lit from +z, unasked), and a point
+  // light whose attenuation is 0 at every distance (it lit everything fully).
+  vtkLight* pointless = scatterer_testing::AddSceneLight(stage.Renderer, 0, 0, 0);
+  pointless->SetFocalPoint(0, 0, 0);
+  vtkLight* unattenuated = scatterer_testing::AddSceneLight(stage.Renderer, 16, 16, 60, 16, 16, 0);
+  unattenuated->SetPositional(true);
+  unattenuated->SetConeAngle(180.0);
+  unattenuated->SetAttenuationValues(0, 0, 0);
+  const auto with = stage.Render();
+  EXPECT_TRUE(capture.Has("ignores 2 switched-on light(s) whose direction is undefined"))
+    << capture.Window->Text;
+  EXPECT_EQ(scatterer_testing::MaxDifference(good, with), 0);
+}
