@@ -59,7 +59,7 @@ vec3 st_compressHighlights(vec3 received)
 // The light a sample takes from a transport read. With VTK's gradient shading on (Shade),
 // the read is a visibility: the shaded colour (which already carries the lights'
 // intensities, clamped to 1 by VTK) times the read over an unoccluded white sample's light
-// (st_unlitNorm, which the shading multiplies by). The knee compresses that ratio, not the
+// (the shading divides by it). The knee compresses that ratio, not the
 // read: compressed before the division, the ratio fell as 1 / intensity, and a brighter
 // light drew a darker picture (intensity 1000: black); not compressed at all, the
 // multiple scattering's glow above 1 pushed the shaded colour into the display's clamp

@@ -195,8 +195,8 @@ TEST(ShaderComposer, SamplesThatShareALightReadCarryTheRayLoopsOwnStep)
   EXPECT_EQ(count("st_transportRead("), 1);
   // The group's reads are compressed as they are taken (the samples between interpolate
   // the compressed light), so no sample compresses again.
-  EXPECT_EQ(count("st_compressHighlights(st_transportRead("), 1);
-  EXPECT_EQ(count("st_compressHighlights("), 1);
+  EXPECT_EQ(count("st_shownLight(st_transportRead("), 1);
+  EXPECT_EQ(count("st_shownLight("), 1);
   EXPECT_EQ(count("g_dataPos += g_dirStep;"), 3);
   for (const char* tag :
     { "//VTK::Terminate::Impl", "//VTK::Base::Impl", "//VTK::Cropping::Impl",
@@ -208,7 +208,7 @@ TEST(ShaderComposer, SamplesThatShareALightReadCarryTheRayLoopsOwnStep)
   EXPECT_EQ(count("{"), count("}"));
   EXPECT_FALSE(Has(impl, "@"));
   EXPECT_TRUE(Has(scatterer_shader::ShadingInitialization(f),
-    "st_lightEnd = st_compressHighlights(st_transportRead"));
+    "st_lightEnd = st_shownLight(st_transportRead"));
   EXPECT_EQ(
     f.Describe(), "transport lights=1 materials=1 shadow thin bleed boundary light-stride=4");
 
