@@ -207,8 +207,8 @@ TEST(ShaderComposer, SamplesThatShareALightReadCarryTheRayLoopsOwnStep)
   }
   EXPECT_EQ(count("{"), count("}"));
   EXPECT_FALSE(Has(impl, "@"));
-  EXPECT_TRUE(Has(scatterer_shader::ShadingInitialization(f),
-    "st_lightEnd = st_shownLight(st_transportRead"));
+  EXPECT_TRUE(Has(
+    scatterer_shader::ShadingInitialization(f), "st_lightEnd = st_shownLight(st_transportRead"));
   EXPECT_EQ(
     f.Describe(), "transport lights=1 materials=1 shadow thin bleed boundary light-stride=4");
 
