@@ -304,7 +304,12 @@ def split_shadow_two_ranks(args):
     check(within(stats, SPLIT_SHADOW_TOLERANCE),
           "with ghost layers (%d) the 2-rank image matches the 1-rank image: %s within %s"
           % (info["ScattererRequestedGhostLayersInfo"][0], stats, SPLIT_SHADOW_TOLERANCE))
-    render(mhd, scenes.SPLIT_SHADOW_SCENE, "Scatterer Volume", without, ghost_layers=0)
+    bare = render(mhd, scenes.SPLIT_SHADOW_SCENE, "Scatterer Volume", without, ghost_layers=0)
+    # Pieces without ghost layers still exchange the light (they did not: each was lit
+    # through its own voxels only, as with the exchange off).
+    check(bare["ScattererLightExchangeInfo"][0] >= 1 and bare["ScattererLightExchangeInfo"][3] == 1,
+          "without ghost layers the pieces still exchange the light: %s"
+          % (bare["ScattererLightExchangeInfo"],))
     stats = compare.difference(without, reference)
     check(not within(stats, SPLIT_SHADOW_TOLERANCE),
           "control: without ghost layers the shadow across the border is lost: %s exceeds %s"

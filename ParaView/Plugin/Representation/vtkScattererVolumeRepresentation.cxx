@@ -333,8 +333,21 @@ int vtkScattererVolumeRepresentation::RequestData(
     ? vtkImageData::GetData(inputVector[0], 0)
     : nullptr;
   auto* owned = vtkImageData::SafeDownCast(this->Cache);
-  if (!input || !owned || !input->HasAnyGhostCells())
+  if (!input || !owned)
   {
+    return 1;
+  }
+  if (!input->HasAnyGhostCells())
+  {
+    // A piece of split data without ghost layers (ScattererGhostLayers 0, or a source that
+    // gives none) owns all it holds, and still takes part in the light exchange, which
+    // needs the part it owns: without it each piece was lit through its own voxels only.
+    if (this->Pieces > 1)
+    {
+      owned->GetBounds(this->OwnedBounds);
+      owned->GetExtent(this->OwnedExtent);
+      this->RendersOwnedPartOnly = true;
+    }
     return 1;
   }
   // Keep the ghost layers for the illumination; render only the owned bounds.

@@ -192,7 +192,7 @@ private:
   double FinestSpacing = 0.0;      // of the split data, at the last update (0: not split)
   double Spacing[3] = { 0, 0, 0 }; // of the split data, at the last update
   int UserCropping = 0;
-  bool RendersOwnedPartOnly = false; // the cache holds ghost layers beyond OwnedBounds
+  bool RendersOwnedPartOnly = false; // a piece of split data: OwnedBounds is the part it owns
   double OwnedBounds[6] = { 0, -1, 0, -1, 0, -1 };
   int OwnedExtent[6] = { 0, -1, 0, -1, 0, -1 };
   int WholeExtent[6] = { 0, -1, 0, -1, 0, -1 };
