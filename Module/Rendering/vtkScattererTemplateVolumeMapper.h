@@ -43,7 +43,7 @@
  * warning per reason if illumination was asked for: other blend modes, rectilinear
  * grids, the depth pass; in per-sample mode multi-component scalars, 2D transfer
  * functions, a mask, clipping planes, cropping (unless CroppedMatterCastsShadows),
- * gradient opacity that hides matter and a vtkMultiVolume; in transport mode a
+ * gradient opacity (a function not 1 everywhere) and a vtkMultiVolume; in transport mode a
  * partitioned volume whose whole does not fit one 3D texture, a label-map mask with
  * several components, a 2D transfer function or gradient opacity, a 2D transfer
  * function or gradient opacity on several components, and a vtkMultiVolume of
