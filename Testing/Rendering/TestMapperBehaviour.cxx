@@ -707,7 +707,7 @@ TEST(MapperBehaviour, TheSameSceneInAnotherLengthUnitIsLitAlike)
   // same picture; the transport stored extinctions in world units at half precision, out
   // of its range at these scales, and lost its multiple scattering (micro-CT in metres).
   std::vector<unsigned char> reference;
-  for (double s : { 1.0, 1e-6, 1e6 })
+  for (double s : { 1.0, 1e-3, 1e-6, 1e6 })
   {
     Scene scene;
     scene.Image->SetSpacing(s, s, s);

@@ -115,6 +115,8 @@ TEST(IlluminationSettings, RaySamplesShareALightReadWhileTheirSpanFitsInATexel)
   EXPECT_EQ(il::lightReadStride(0.5, 2.22), 4);
   EXPECT_EQ(il::lightReadStride(0.5, 2.0), 4); // exactly one texel
   EXPECT_EQ(il::lightReadStride(0.5, 1.99), 2);
+  // Exactly one texel in metres, the step rounded to single precision as it arrives.
+  EXPECT_EQ(il::lightReadStride(static_cast<double>(0.5e-3f), 2.0e-3), 4);
   EXPECT_EQ(il::lightReadStride(0.957, 2.22), 2); // VTK's automatic step: one voxel
   EXPECT_EQ(il::lightReadStride(1.2, 2.22), 1);
   EXPECT_EQ(il::lightReadStride(0.01, 100.0), il::kMaximumLightReadStride);

@@ -119,8 +119,11 @@ inline int lightReadStride(double rayStep, double texelSize)
   if (!(rayStep > 0.0) || !(texelSize > 0.0) || !(texelSize < 1e300) || !(rayStep < 1e300)) {
     return 1;
   }
+  // "Fits" within a relative 1e-5: the ray step arrives rounded to single precision, and a
+  // span of exactly one texel must not depend on the data's unit (0.5 mm steps over 2 mm
+  // texels gave 4, the same in metres 2).
   int stride = kMaximumLightReadStride;
-  while (stride > 1 && stride * rayStep > texelSize) {
+  while (stride > 1 && stride * rayStep > texelSize * (1.0 + 1e-5)) {
     stride /= 2;
   }
   return stride;
