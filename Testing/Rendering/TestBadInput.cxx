@@ -83,6 +83,13 @@ struct Stage
     this->Renderer->ResetCameraClippingRange();
     return scatterer_testing::RenderAndGrab(scatterer_testing::SharedWindow());
   }
+  // The shell, ball and plate lit by the stage's light: the picture that lights left out
+  // must leave as it is.
+  std::vector<unsigned char> RenderShellBallPlate()
+  {
+    this->Mapper->SetInputData(scatterer_testing::MakeShellBallPlate(32, VTK_UNSIGNED_CHAR));
+    return this->Render();
+  }
 };
 }
 
@@ -256,8 +263,7 @@ TEST(BadInput, NonFiniteLightsAreLeftOutWithAWarning)
 {
   Capture capture;
   Stage stage;
-  stage.Mapper->SetInputData(scatterer_testing::MakeShellBallPlate(32, VTK_UNSIGNED_CHAR));
-  const auto good = stage.Render();
+  const auto good = stage.RenderShellBallPlate();
   ASSERT_GT(scatterer_testing::MeanBrightness(good), 5.0);
   vtkLight* bad = scatterer_testing::AddSceneLight(stage.Renderer, -1, 0.2, 0.5);
   bad->SetIntensity(std::numeric_limits<double>::quiet_NaN());
@@ -280,8 +286,7 @@ TEST(BadInput, LightsWithoutADirectionOrAPositiveAttenuationAreLeftOutWithAWarni
 {
   Capture capture;
   Stage stage;
-  stage.Mapper->SetInputData(scatterer_testing::MakeShellBallPlate(32, VTK_UNSIGNED_CHAR));
-  const auto good = stage.Render();
+  const auto good = stage.RenderShellBallPlate();
   ASSERT_GT(scatterer_testing::MeanBrightness(good), 5.0);
   // A directional light at its focal point (it was lit from +z, unasked), and a point
   // light whose attenuation is 0 at every distance (it lit everything fully).
