@@ -260,7 +260,9 @@ int ParseRenderOptions(int argc, char* argv[], RenderOptions& o)
       o.Illumination);
   both.push_back(illumination);
   transport.push_back(AddSetting(app, "--transport-scale", "N", il::TransportScale,
-    "transport: volume voxels per transport voxel per axis", o.TransportScale));
+    "transport: volume voxels per transport voxel per axis (fewer along an axis of voxels twice as "
+    "long or more)",
+    o.TransportScale));
   transport.push_back(AddSetting(app, "--max-transport-voxels", "N", il::MaximumTransportVoxels,
     "transport: most voxels of a still frame's transport volume;\na larger volume is built coarser "
     "(0: no limit)",

@@ -287,11 +287,15 @@ void vtkScattererLightExchange::Exchange(vtkRenderer* renderer, vtkVolume* volum
   const IndexFrame frame = hasPiece ? FrameOf(piece, volume) : IndexFrame();
   // Still frames: lines one voxel apart, since a coarser map blurs the edges of the
   // shadows it carries (a 2-voxel map doubled the error of the long-shadow test's
-  // composite). Interactive frames: as coarse as the transport volume is then.
+  // composite). Interactive frames: about as coarse as the transport volume is then, its
+  // scale taken for cubic voxels: every rank must size the maps alike, and a rank
+  // without a piece has no spacing to go by.
   const int wholeDims[3] = { whole[1] - whole[0] + 1, whole[3] - whole[2] + 1,
     whole[5] - whole[4] + 1 };
-  const double texel =
-    this->Interactive ? std::max(1, mapper->GetEffectiveTransportScale(wholeDims, true)) : 1.0;
+  const double cubic[3] = { 1.0, 1.0, 1.0 };
+  const double texel = this->Interactive
+    ? std::max(1, mapper->GetEffectiveTransportScale(wholeDims, cubic, true))
+    : 1.0;
 
   // 1. Did anything change on any rank?
   scatterer_render::KeyWriter key;

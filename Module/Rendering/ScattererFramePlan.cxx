@@ -659,8 +659,9 @@ std::string FramePlanner::PlanFeatures(vtkVolume* vol, const VolumeSource& sourc
       image->GetDimensions(dims);
     }
     f.LightStride = std::min(requests.MaximumLightStride,
-      il::lightReadStride(
-        source.StillRayStep, parameters.TransportScaleFor(dims, false) * source.VoxelSize));
+      il::lightReadStride(source.StillRayStep,
+        il::transportTexelSize(
+          parameters.TransportScaleFor(dims, source.VoxelEdges, false), source.VoxelEdges)));
   }
   // Multiple scattering is an effect of its own: with shadows off the transport volume
   // still carries it (the light unattenuated, scattered as the medium scatters it).

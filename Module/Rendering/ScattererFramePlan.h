@@ -93,8 +93,8 @@ struct VolumeSource
   /// SampleDistance, AutoAdjustSampleDistances and LockSampleDistanceToInputSpacing
   /// (world units; 0: unknown).
   double StillRayStep = 0.0;
-  /// A voxel's size in the world: the geometric mean of its edges (0: unknown).
-  double VoxelSize = 0.0;
+  /// A voxel's edges in the world (0: unknown).
+  double VoxelEdges[3] = { 0.0, 0.0, 0.0 };
   int ScalarMode = 0, ArrayAccessMode = 0, ArrayId = -1;
   const char* ArrayName = nullptr;
   /// A vtkMultiVolume: each input port's data and volume, ports ascending (empty: one volume).

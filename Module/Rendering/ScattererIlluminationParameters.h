@@ -50,8 +50,8 @@ struct IlluminationParameters
   bool Transport() const { return this->IlluminationMode == il::Transport; }
 
   /** The scale a transport volume is built at (MaximumTransportVoxels) for a volume of
-   * @p dims points, or for the whole volume when it is a piece of one. */
-  int TransportScaleFor(const int dims[3], bool interactive) const
+   * @p dims points of @p spacing, or for the whole volume when it is a piece of one. */
+  int TransportScaleFor(const int dims[3], const double spacing[3], bool interactive) const
   {
     // A piece is never larger than the whole it belongs to: a whole set too small
     // (a stale setting) still keeps the piece within the voxel budget.
@@ -61,7 +61,7 @@ struct IlluminationParameters
       whole[axis] = std::max(this->WholeDimensions[axis], dims[axis]);
     }
     const int still =
-      il::transportScaleFor(this->TransportScale, whole, this->MaximumTransportVoxels);
+      il::transportScaleFor(this->TransportScale, whole, spacing, this->MaximumTransportVoxels);
     return interactive ? il::interactiveTransportScaleFor(
                            this->TransportScale, this->InteractiveTransportScale, still)
                        : still;

@@ -5,6 +5,7 @@
 #include "ScattererIlluminationParameters.h"
 #include "ScattererTemplateCache.h"
 #include "ScattererTransfer2D.h"
+#include "ScattererTransportGrid.h"
 #include "ScattererWarnOnce.h"
 
 #include "vtkColorTransferFunction.h"
@@ -197,12 +198,14 @@ std::string TransportUpdate::Update(vtkRenderer* ren, vtkVolume* vol, const Fram
   // A volume larger than MaximumTransportVoxels allows is built coarser.
   int gridDims[3];
   t.GetGridSourceDims(gridDims);
-  t.Downsample = parameters.TransportScaleFor(gridDims, false);
+  double voxelLengths[3];
+  scatterer_gpu::VoxelLengths(gridDims, t.TexToWorld, voxelLengths);
+  t.Downsample = parameters.TransportScaleFor(gridDims, voxelLengths, false);
   t.StillDownsample = t.Downsample; // the diffusion's grid, also on interactive frames
   const bool interactive = ren->GetAllocatedRenderTime() < 1.0;
   if (interactive && !this->Transport->IsCurrent(renWin, t))
   {
-    t.Downsample = parameters.TransportScaleFor(gridDims, true);
+    t.Downsample = parameters.TransportScaleFor(gridDims, voxelLengths, true);
   }
   if (source.Progress && !this->Transport->IsCurrent(renWin, t))
   {
@@ -241,6 +244,19 @@ std::string TransportUpdate::UpdateVolume(vtkRenderer* ren, vtkVolume* vol, cons
     return "the volume texture is not loaded";
   }
   auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  vtkTextureObject* texture = block->TextureObject;
+  if (texture->GetWidth() < 1 || texture->GetHeight() < 1 || texture->GetDepth() < 1)
+  {
+    // VTK could not upload the volume (it says "Invalid texture dimensions"): an axis
+    // longer than the GPU's 3D textures. Said once, not as a degenerate placement at
+    // every frame.
+    warn("Scatterer-template illumination cannot light this volume: VTK did not upload it "
+         "to the GPU (at most " +
+      std::to_string(vtkTextureObject::GetMaximumTextureSize3D(renWin)) +
+      " texels along an axis of a 3D texture here); this volume renders as "
+      "vtkOpenGLGPUVolumeRayCastMapper would.");
+    return "the volume texture holds no voxels";
+  }
   vtkScattererTransportVolume::Inputs& t = this->Inputs;
   this->ReadTexture = volumeTexture;
   this->PartTextures.clear();

@@ -294,12 +294,19 @@ double vtkScattererTemplateVolumeMapper::GetIlluminationReach(const double spaci
   const bool thin = this->ShadowsEnabled && this->ThinPartCheckEnabled;
   const bool transport = this->IlluminationMode == TRANSPORT;
   const int scale = this->WholeDimensions[0] > 0
-    ? std::max(this->GetEffectiveTransportScale(this->WholeDimensions, false),
-        this->GetEffectiveTransportScale(this->WholeDimensions, true))
+    ? std::max(this->GetEffectiveTransportScale(this->WholeDimensions, spacing, false),
+        this->GetEffectiveTransportScale(this->WholeDimensions, spacing, true))
     : std::max(this->TransportScale, this->InteractiveTransportScale);
-  const double voxel = std::max({ sx, sy, sz });
+  // The grid's terms count voxels, the same number along every axis or fewer along an axis
+  // of long voxels (scatterer::illumination::transportStridesFor): measured along the
+  // finest axis, the reach over the finest spacing is the ghost layers a piece needs. By
+  // the largest spacing (until 2026-12-07) a CT's 1.5 mm slices over 0.96 mm pixels asked
+  // for 58 layers instead of 37, and 0.5 x 0.5 x 5 mm voxels for 361: every rank held the
+  // whole volume.
+  const double voxel = std::min({ sx > 0.0 ? sx : VTK_DOUBLE_MAX, sy > 0.0 ? sy : VTK_DOUBLE_MAX,
+    sz > 0.0 ? sz : VTK_DOUBLE_MAX });
   const int stillScale = this->WholeDimensions[0] > 0
-    ? this->GetEffectiveTransportScale(this->WholeDimensions, false)
+    ? this->GetEffectiveTransportScale(this->WholeDimensions, spacing, false)
     : this->TransportScale;
   const double diffusionVoxel = scatterer::illumination::diffusionVoxelsFor(stillScale) * voxel;
   const int iterations = vtkScattererTransportVolume::Inputs().DiffusionIterations;
@@ -333,9 +340,9 @@ void vtkScattererTemplateVolumeMapper::SetWholeDimensions(int nx, int ny, int nz
 }
 
 int vtkScattererTemplateVolumeMapper::GetEffectiveTransportScale(
-  const int dims[3], bool interactive) const
+  const int dims[3], const double spacing[3], bool interactive) const
 {
-  return this->GatherParameters().TransportScaleFor(dims, interactive);
+  return this->GatherParameters().TransportScaleFor(dims, spacing, interactive);
 }
 
 void vtkScattererTemplateVolumeMapper::SetExtraShaderCodeForTesting(const std::string& glsl)
@@ -525,9 +532,10 @@ void vtkScattererTemplateVolumeMapper::RenderRayCaster(vtkRenderer* ren, vtkVolu
 }
 
 void vtkScattererTemplateVolumeMapper::StillSampling(
-  vtkVolume* vol, double& rayStep, double& voxelSize)
+  vtkVolume* vol, double& rayStep, double voxelEdges[3])
 {
-  rayStep = voxelSize = 0.0;
+  rayStep = 0.0;
+  std::fill(voxelEdges, voxelEdges + 3, 0.0);
   auto* image = vtkImageData::SafeDownCast(this->GetInput());
   if (!image || !vol)
   {
@@ -540,7 +548,7 @@ void vtkScattererTemplateVolumeMapper::StillSampling(
   // The voxel's edges in the world: the spacing scaled by the volume's matrix (an image's
   // direction matrix only turns them), as VTK 9.1 measures them for its step.
   vtkMatrix4x4* matrix = vol->GetMatrix();
-  double edges[3], smallest = VTK_DOUBLE_MAX;
+  double smallest = VTK_DOUBLE_MAX;
   for (int a = 0; a < 3; ++a)
   {
     double squared = 0.0;
@@ -548,10 +556,9 @@ void vtkScattererTemplateVolumeMapper::StillSampling(
     {
       squared += matrix->GetElement(r, a) * matrix->GetElement(r, a);
     }
-    edges[a] = std::fabs(spacing[a]) * std::sqrt(squared);
-    smallest = std::min(smallest, edges[a]);
+    voxelEdges[a] = std::fabs(spacing[a]) * std::sqrt(squared);
+    smallest = std::min(smallest, voxelEdges[a]);
   }
-  voxelSize = std::cbrt(edges[0] * edges[1] * edges[2]);
   // vtkOpenGLGPUVolumeRayCastMapper::vtkInternal::UpdateSamplingDistance (9.1), without
   // the reduction of frames rendered while the user drags.
   if (this->GetAutoAdjustSampleDistances())
@@ -581,7 +588,7 @@ std::string vtkScattererTemplateVolumeMapper::PlanFrame(vtkRenderer* ren, vtkVol
   source.Clipped = this->GetClippingPlanes() && this->GetClippingPlanes()->GetNumberOfItems() > 0;
   source.Cropped = this->GetCropping() != 0;
   source.SampleDistance = this->GetSampleDistance();
-  this->StillSampling(vol, source.StillRayStep, source.VoxelSize);
+  this->StillSampling(vol, source.StillRayStep, source.VoxelEdges);
   source.ScalarMode = this->ScalarMode;
   source.ArrayAccessMode = this->ArrayAccessMode;
   source.ArrayId = this->ArrayId;

@@ -203,7 +203,10 @@ public:
    * depends on changed (orbiting under a scene light), interactive frames keep the
    * still frames' volume. Interactive frames keep the still frames' multiple scattering
    * grid, so their colours stay the still frames'. Smaller is sharper and slower. A
-   * volume larger than MaximumTransportVoxels allows is built coarser.
+   * volume larger than MaximumTransportVoxels allows is built coarser. An axis whose
+   * voxels are at least twice as long as the shortest axis's takes fewer per transport
+   * voxel, so that the texels stay about as long along it (2, 2, 1 on an MRI's 1 x 1 x 3
+   * mm; scatterer::illumination::transportStridesFor).
    */
   vtkScattererSetSettingMacro(TransportScale, int);
   vtkGetMacro(TransportScale, int);
@@ -237,11 +240,14 @@ public:
   ///@}
 
   /**
-   * Transport mode: the scale (volume voxels per transport voxel) the transport volume of
-   * a volume of @p dims points (or of the whole volume, SetWholeDimensions) is built at,
-   * for still frames or for frames the user drags (@p interactive).
+   * Transport mode: the scale (volume voxels per transport voxel; fewer along an axis
+   * whose voxels are at least twice as long as the shortest axis's) the transport volume
+   * of a volume of @p dims points of @p spacing (or of the whole volume,
+   * SetWholeDimensions) is built at, for still frames or for frames the user drags
+   * (@p interactive).
    */
-  int GetEffectiveTransportScale(const int dims[3], bool interactive) const;
+  int GetEffectiveTransportScale(
+    const int dims[3], const double spacing[3], bool interactive) const;
 
   ///@{
   /**
@@ -291,8 +297,10 @@ public:
    * of the template radius (the kernel), two diffusion voxels (the ambient occlusion)
    * and, with MultipleScattering above 0, one diffusion voxel per diffusion iteration
    * (8); plus one transport voxel. A diffusion voxel is max(4, 2 x the still frames'
-   * scale) x the largest spacing; a transport voxel is the larger of the still and
-   * dragging frames' scales x the largest spacing (scales from
+   * scale) x the finest spacing; a transport voxel is the larger of the still and
+   * dragging frames' scales x the finest spacing (both grids count voxels, as many along
+   * every axis or fewer along an axis of long voxels, so the reach over the finest spacing
+   * is the ghost layers a piece needs; scales from
    * GetEffectiveTransportScale for the whole dimensions; TransportScale and
    * InteractiveTransportScale when they are not set). Defaults at spacing 1:
    * max(10, 8, 8 x 4) + 4 = 36; 14 with MultipleScattering 0; 52 at TransportScale 3
@@ -548,9 +556,9 @@ private:
   // settings as one VTK-free record (Module/Rendering/Scatterer*.h).
   /** The settings, gathered for the helpers of one frame. */
   scatterer_render::IlluminationParameters GatherParameters() const;
-  /** The ray caster's step on still frames and a voxel's size, in world units
-   * (VolumeSource::StillRayStep, VolumeSource::VoxelSize; 0 if unknown). */
-  void StillSampling(vtkVolume* vol, double& rayStep, double& voxelSize);
+  /** The ray caster's step on still frames and a voxel's edges, in world units
+   * (VolumeSource::StillRayStep, VolumeSource::VoxelEdges; 0 if unknown). */
+  void StillSampling(vtkVolume* vol, double& rayStep, double voxelEdges[3]);
   /** What this frame needs, or why this volume renders as stock ("" if it can be lit). */
   std::string PlanFrame(vtkRenderer* ren, vtkVolume* vol,
     const scatterer_render::IlluminationParameters& parameters, scatterer_render::FramePlan& plan);

@@ -33,7 +33,7 @@ void DrawSource(const TransportPass& pass, const SweepPlan& plan, const CoarseGr
   SetCommonUniforms(program, pass.Grid, pass.In);
   program->SetUniform3f("st_coarseDims", u.Dims);
   program->SetUniform3f("st_coarseToGrid", u.ToGrid);
-  program->SetUniformi("st_block", coarse.Block);
+  program->SetUniform3f("st_blockSize", coarse.BlockSize().data());
   program->SetUniformi("st_atlasColumns", u.AtlasColumns);
   program->SetUniform3f("st_h", u.H);
   ScopedSampler fineScattering(program, "st_fineScattering", pass.Textures.FineScattering);
@@ -119,7 +119,7 @@ ScopedScatteredLight::ScopedScatteredLight(
   program->SetUniform3f("st_ambient", ambient);
   program->SetUniform3f("st_coarseDims", u.Dims);
   program->SetUniform3f("st_coarseToGrid", u.ToGrid);
-  program->SetUniformf("st_block", static_cast<float>(coarse.Block));
+  program->SetUniform3f("st_blockSize", coarse.BlockSize().data());
   program->SetUniformf("st_strength", pass.In.MultipleScattering);
   program->SetUniformi("st_atlasColumns", u.AtlasColumns);
 }

@@ -26,15 +26,27 @@ int FloorDiv(int a, int b)
   return a >= 0 ? a / b : -((-a + b - 1) / b);
 }
 
+void VoxelLengths(const int dims[3], const double texToWorld[16], double lengths[3])
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    lengths[a] = std::sqrt(texToWorld[a] * texToWorld[a] + texToWorld[4 + a] * texToWorld[4 + a] +
+                   texToWorld[8 + a] * texToWorld[8 + a]) /
+      std::max(dims[a], 1);
+  }
+}
+
 bool TransportGrid::Place(
   const int volumeDims[3], const int indexOrigin[3], int downsample, const double texToWorld[16])
 {
-  // Every ds-th structured index from index 0; one more at each end covers the
-  // texture's edges.
-  const int ds = std::max(1, downsample);
-  this->Downsample = ds;
+  // Every ds-th structured index from index 0 (ds the axis's stride); one more at each
+  // end covers the texture's edges.
+  this->Downsample = std::max(1, downsample);
+  VoxelLengths(volumeDims, texToWorld, this->Spacing);
+  scatterer::illumination::transportStridesFor(this->Downsample, this->Spacing, this->Strides);
   for (int a = 0; a < 3; ++a)
   {
+    const int ds = this->Strides[a];
     const int n = std::max(1, volumeDims[a]);
     const int e0 = indexOrigin[a];
     const int first = FloorDiv(e0, ds), last = FloorDiv(e0 + n - 1 + ds - 1, ds);
@@ -97,9 +109,9 @@ double TransportGrid::TexelLength(int a) const
 
 void TransportGrid::GetPositionsOn(const TransportGrid& to, float scale[3], float offset[3]) const
 {
-  const double ratio = static_cast<double>(this->Downsample) / to.Downsample;
   for (int a = 0; a < 3; ++a)
   {
+    const double ratio = static_cast<double>(this->Strides[a]) / to.Strides[a];
     const bool flat = to.Dims[a] < 2;
     scale[a] = flat ? 0.0f : static_cast<float>(ratio);
     offset[a] = flat ? 0.0f : static_cast<float>(this->FirstIndex[a] * ratio - to.FirstIndex[a]);
@@ -116,15 +128,15 @@ void TransportGrid::GetDims(float dims[3]) const
 
 CoarseGrid CoarseGrid::Over(const TransportGrid& grid, int downsample, int stillDownsample)
 {
-  // A coarse texel spans diffusionVoxelsFor(s) volume voxels, s a still frame's voxels per
-  // fine texel. A coarse texel's medium is the mean of its fine texels' (pass 0b); one
-  // point sample of the transfer function standing for a whole block (transport scale 3
-  // or more) let the diffusion pile the bone's colour up into yellow-green blotches on
-  // the CT head, hence at least 2 fine texels a block at a still frame's scale. A frame
-  // rendered while the user drags is built at a coarser scale than s, and its coarse
-  // texels stay as large as a still frame's: blocks of 8 voxels (scale 4 on the CT head,
-  // 2 fine texels a block) outweighed the skull, a few voxels thick, by the soft tissue
-  // and air around it, and tinted the bone pink and mottled while the user dragged (ivory
+  // A coarse texel spans diffusionVoxelsFor(s) volume voxels (of the shortest axis, along
+  // an axis of long voxels: diffusionBlocksFor), s a still frame's transport scale. A coarse
+  // texel's medium is the mean of its fine texels' (pass 0b); one point sample of the transfer
+  // function standing for a whole block (transport scale 3 or more) let the diffusion pile the
+  // bone's colour up into yellow-green blotches on the CT head, hence at least 2 fine texels a
+  // block at a still frame's scale. A frame rendered while the user drags is built at a coarser
+  // scale than s, and its coarse texels stay as large as a still frame's: blocks of 8 voxels (scale
+  // 4 on the CT head, 2 fine texels a block) outweighed the skull, a few voxels thick, by the soft
+  // tissue and air around it, and tinted the bone pink and mottled while the user dragged (ivory
   // when they let go). Such a frame's fine texels are then blocks of their own, and their
   // medium the mean of 2^3 points (Subsamples) instead of one, about as far apart as a
   // still frame's fine texels. A still frame's own points stay its texels' centres, so
@@ -133,14 +145,14 @@ CoarseGrid CoarseGrid::Over(const TransportGrid& grid, int downsample, int still
   const int fine = std::max(1, downsample);
   const int still = stillDownsample > 0 ? stillDownsample : fine;
   CoarseGrid coarse;
-  coarse.Block = std::max(1, scatterer::illumination::diffusionVoxelsFor(still) / fine);
   coarse.Subsamples = fine >= 2 * still ? 2 : 1;
+  scatterer::illumination::diffusionBlocksFor(still, grid.Strides, grid.Spacing, coarse.Block);
   for (int a = 0; a < 3; ++a)
   {
     const int first = grid.FirstIndex[a];
-    const int coarseFirst = FloorDiv(first, coarse.Block);
-    coarse.ToGrid[a] = coarse.Block * coarseFirst - first;
-    coarse.Dims[a] = FloorDiv(first + grid.Dims[a] - 1, coarse.Block) - coarseFirst + 1;
+    const int coarseFirst = FloorDiv(first, coarse.Block[a]);
+    coarse.ToGrid[a] = coarse.Block[a] * coarseFirst - first;
+    coarse.Dims[a] = FloorDiv(first + grid.Dims[a] - 1, coarse.Block[a]) - coarseFirst + 1;
   }
   coarse.AtlasColumns = AtlasColumnsFor(coarse.Dims, kAtlasMaxSide);
   return coarse;
@@ -199,7 +211,7 @@ CoarseUniforms::CoarseUniforms(const TransportGrid& grid, const CoarseGrid& coar
   coarse.GetToGrid(this->ToGrid);
   for (int a = 0; a < 3; ++a)
   {
-    this->H[a] = static_cast<float>(coarse.Block * grid.TexelLength(a));
+    this->H[a] = static_cast<float>(coarse.Block[a] * grid.TexelLength(a));
   }
   this->AtlasColumns = coarse.AtlasColumns;
 }

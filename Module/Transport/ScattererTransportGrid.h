@@ -10,6 +10,7 @@
 
 #include "vtkScattererTransportVolume.h" // for Light
 
+#include <array>   // for CoarseGrid::BlockSize
 #include <utility> // for std::pair
 #include <vector>  // for SweepPlan::Runs
 
@@ -19,12 +20,19 @@ namespace scatterer_gpu
  * whose extents start below or above it. */
 int FloorDiv(int a, int b);
 
+/** The world length of a voxel along each axis of a volume texture of @p dims texels
+ * placed by @p texToWorld (row-major 4x4; column a spans the texture along axis a). */
+void VoxelLengths(const int dims[3], const double texToWorld[16], double lengths[3]);
+
 /** The fine transport grid: its size, and the maps between its texels, the volume
  * texture's coordinates and the world. */
 struct TransportGrid
 {
   int Dims[3] = { 0, 0, 0 };
-  int Downsample = 1;              ///< volume voxels per grid texel along each axis
+  int Downsample = 1; ///< the transport scale it is placed at
+  int Strides[3] = { 1, 1,
+    1 }; ///< volume voxels per grid texel along each axis (transportStridesFor)
+  double Spacing[3] = { 1, 1, 1 }; ///< the voxels' world lengths the strides follow
   int FirstIndex[3] = { 0, 0, 0 }; ///< global index (in grid texels) of grid texel 0
   /// Grid texel j -> volume texture coordinate: j * GridToTex + GridToTexOffset.
   double GridToTex[3] = { 0, 0, 0 };
@@ -38,9 +46,10 @@ struct TransportGrid
 
   /**
    * Places the grid on a volume texture of @p volumeDims texels whose first texel is
-   * structured index @p indexOrigin, one grid texel per @p downsample voxels, with
-   * @p texToWorld (row-major 4x4). Returns false when that placement is degenerate
-   * (zero spacing, a singular matrix); the sizes are set all the same.
+   * structured index @p indexOrigin, with @p texToWorld (row-major 4x4), at transport
+   * scale @p downsample: one grid texel per transportStridesFor voxels along each axis,
+   * for the voxels' lengths (VoxelLengths). Returns false when that placement is
+   * degenerate (zero spacing, a singular matrix); the sizes are set all the same.
    */
   bool Place(
     const int volumeDims[3], const int indexOrigin[3], int downsample, const double texToWorld[16]);
@@ -54,19 +63,28 @@ struct TransportGrid
   /**
    * Where this grid's positions lie on grid @p to (both placed on the same volume, at any
    * Downsample): position j here is j * scale + offset there. Texel j lies at global
-   * index (F + j) d, which on @p to is (F + j) d / d_to - F_to. An axis of one texel on
+   * index (F + j) d (d the axis's stride), which on @p to is (F + j) d / d_to - F_to. An axis of
+   * one texel on
    * @p to maps to its texel, 0.
    */
   void GetPositionsOn(const TransportGrid& to, float scale[3], float offset[3]) const;
 };
 
-/** The diffusion's coarse grid: blocks of Block^3 fine texels, anchored like the fine
- * grid (to multiples of Block in global fine indices) so that pieces share it. */
+/** The diffusion's coarse grid: blocks of Block[0] x Block[1] x Block[2] fine texels,
+ * anchored like the fine grid (to multiples of Block in global fine indices) so that
+ * pieces share it. */
 struct CoarseGrid
 {
   int Dims[3] = { 0, 0, 0 };
   int ToGrid[3] = { 0, 0, 0 }; ///< coarse texel c covers fine texels Block c + ToGrid + [0, Block)
-  int Block = 2;               ///< fine texels per coarse texel along each axis
+  int Block[3] = { 2, 2, 2 };  ///< fine texels per coarse texel along each axis
+
+  /** Block as floats (the passes' st_blockSize). */
+  std::array<float, 3> BlockSize() const
+  {
+    return { static_cast<float>(this->Block[0]), static_cast<float>(this->Block[1]),
+      static_cast<float>(this->Block[2]) };
+  }
   /// Points per axis each fine texel's medium is the mean of in passes 0a and 0b: 2 on a
   /// frame built at twice a still frame's scale or more (while the user drags), so that
   /// its medium is sampled about as finely as a still frame's; 1 (the centre) otherwise.

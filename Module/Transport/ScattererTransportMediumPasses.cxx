@@ -118,7 +118,7 @@ void DrawCoarseMedium(const TransportPass& pass, const CoarseGrid& coarse)
   program->SetUniform3f("st_coarseToGrid", u.ToGrid);
   program->SetUniform3f("st_h", u.H);
   program->SetUniformi("st_aoSteps", 2);
-  program->SetUniformi("st_block", coarse.Block);
+  program->SetUniform3f("st_blockSize", coarse.BlockSize().data());
   program->SetUniformi("st_subsamples", coarse.Subsamples);
   ScopedVolume volume(program, pass.In);
   ScopedSampler medium(program, "st_medium", pass.Tables.Medium);

@@ -1,5 +1,7 @@
 #include "ScattererTransportUnits.h"
 
+#include "ScattererTransportGrid.h" // for VoxelLengths
+
 #include <algorithm>
 #include <cmath>
 
@@ -13,13 +15,12 @@ double TransportLengthUnit(const vtkScattererTransportVolume::Inputs& in)
   }
   int dims[3];
   in.GetGridSourceDims(dims);
-  // Column a of the placement spans the texture along axis a: dims[a] voxels.
+  double lengths[3];
+  VoxelLengths(dims, in.TexToWorld, lengths);
   double logVoxel = 0.0;
   for (int a = 0; a < 3; ++a)
   {
-    const double length = std::sqrt(in.TexToWorld[a] * in.TexToWorld[a] +
-      in.TexToWorld[4 + a] * in.TexToWorld[4 + a] + in.TexToWorld[8 + a] * in.TexToWorld[8 + a]);
-    logVoxel += std::log2(length / std::max(dims[a], 1)) / 3.0;
+    logVoxel += std::log2(lengths[a]) / 3.0;
   }
   return std::isfinite(logVoxel) ? std::exp2(std::round(logVoxel)) : 1.0;
 }

@@ -27,27 +27,28 @@ in vec2 texCoord;
 flat in float st_layer;          // this layer (scatterer_transport_layers_gs.glsl)
 uniform vec3 st_coarseDims;
 uniform vec3 st_coarseToGrid;      // coarse texel c covers fine positions c * st_block + st_coarseToGrid + [0, st_block)
-uniform int st_block;
+uniform vec3 st_blockSize; // fine texels a coarse texel spans along each axis
 uniform vec3 st_h;                 // coarse texel size along each axis, world units
 uniform int st_aoSteps;
 
 void main()
 {
+  ivec3 st_block = ivec3(st_blockSize + 0.5);
   vec3 c = vec3(floor(texCoord * st_coarseDims.xy), st_layer);
-  float b = float(st_block);
+  vec3 b = vec3(st_block);
   vec3 fine = c * b + st_coarseToGrid;
   vec4 medium = vec4(0.0);
   int points = st_subsamples * st_subsamples * st_subsamples;
-  for (int k = 0; k < st_block * st_block * st_block; ++k)
+  for (int k = 0; k < st_block.x * st_block.y * st_block.z; ++k)
   {
-    vec3 o = vec3(float(k % st_block), float((k / st_block) % st_block), float(k / (st_block * st_block)));
+    vec3 o = vec3(float(k % st_block.x), float((k / st_block.x) % st_block.y), float(k / (st_block.x * st_block.y)));
     for (int p = 0; p < points; ++p)
     {
       // Outside the grid the medium is empty.
       medium += st_mediumAt(st_gridToTexture(st_subsample(fine + o, p)));
     }
   }
-  medium /= b * b * b * float(points);
+  medium /= b.x * b.y * b.z * float(points);
   vec3 centre = fine + vec3(0.5 * (b - 1.0));
   float open = 0.0;
   for (int a = 0; a < 3; ++a)
@@ -56,7 +57,7 @@ void main()
     for (int side = 0; side < 2; ++side)
     {
       vec3 axis = vec3(0.0);
-      axis[a] = side == 0 ? b : -b; // one coarse voxel in fine grid units
+      axis[a] = side == 0 ? b[a] : -b[a]; // one coarse voxel in fine grid units
       float tau = 0.0;
       for (int k = 0; k < st_aoSteps; ++k)
       {

@@ -16,14 +16,14 @@
 uniform sampler2D st_fluence;
 uniform vec3 st_ambient;
 uniform vec3 st_coarseToGrid;
-uniform float st_block;
+uniform vec3 st_blockSize; // fine texels a coarse texel spans along each axis
 uniform float st_strength;
 
 // The multiply scattered and the ambient light at grid position j.
 vec3 st_scatteredAndAmbient(vec3 j)
 {
   // Coarse texel c's centre is at fine position c * b + st_coarseToGrid + (b - 1) / 2.
-  vec3 c = (j - st_coarseToGrid - vec3(0.5 * (st_block - 1.0))) / st_block;
+  vec3 c = (j - st_coarseToGrid - 0.5 * (st_blockSize - 1.0)) / st_blockSize;
   vec3 coarse = (c + vec3(0.5)) / st_coarseDims;
   vec4 fluence = st_atlasLinear(st_fluence, coarse);
   vec3 scattered = st_strength > 0.0 ? st_strength * fluence.rgb : vec3(0.0);

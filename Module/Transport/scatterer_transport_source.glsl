@@ -24,7 +24,7 @@ in vec2 texCoord;
 uniform sampler3D st_fineScattering; // pass 0a: rgb = sigma_s (1 - exp(-2x)) / (2x)
 flat in float st_layer;            // this layer (scatterer_transport_tiles_vs.glsl)
 uniform vec3 st_coarseToGrid;      // coarse texel c covers fine positions c * st_block + st_coarseToGrid + [0, st_block)
-uniform int st_block;
+uniform vec3 st_blockSize; // fine texels a coarse texel spans along each axis
 uniform sampler3D st_coarseMedium; // pass 0b: rgb albedo, a sigma_t
 uniform vec3 st_h;                 // coarse texel size along each axis, world units
 
@@ -59,18 +59,18 @@ float st_escape(ivec3 c)
 
 void main()
 {
+  ivec3 st_block = ivec3(st_blockSize + 0.5);
   ivec3 c = ivec3(ivec2(floor(texCoord * st_coarseDims.xy)), int(st_layer));
   ivec3 fine = c * st_block + ivec3(st_coarseToGrid);
   ivec3 dims = ivec3(st_gridDims);
   vec3 source = vec3(0.0);
-  for (int k = 0; k < st_block * st_block * st_block; ++k)
+  for (int k = 0; k < st_block.x * st_block.y * st_block.z; ++k)
   {
-    ivec3 q = fine + ivec3(k % st_block, (k / st_block) % st_block, k / (st_block * st_block));
+    ivec3 q = fine + ivec3(k % st_block.x, (k / st_block.x) % st_block.y, k / (st_block.x * st_block.y));
     if (all(greaterThanEqual(q, ivec3(0))) && all(lessThan(q, dims)))
     {
       source += texelFetch(st_fineScattering, q, 0).rgb * st_arrivingAtTexel(q);
     }
   }
-  float b = float(st_block);
-  gl_FragData[0] = vec4(source / (b * b * b), st_escape(c));
+  gl_FragData[0] = vec4(source / float(st_block.x * st_block.y * st_block.z), st_escape(c));
 }

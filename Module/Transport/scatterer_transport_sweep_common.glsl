@@ -146,28 +146,28 @@ float st_farFactor(vec3 q, vec3 stepGrid, float len)
   return exp(-0.5 * len * st_farExtinction(q, stepGrid));
 }
 
-// The extinction at grid position g for a path marched through the grid: the texels'
-// means (one read of a one-channel texture), or at TransportScale 1, where no means are
-// held, the volume itself; 0 outside the grid (no matter there).
+// The extinction at grid position g for a path marched through the grid: the volume itself
+// at that point, as the ray caster samples it; 0 outside the grid (no matter there). Not
+// the texels' means (until 2026-12-07): interpolated between texels, they put a dense
+// plate's extinction into the empty texels above it, whose paths to a point light a few
+// voxels up then read T 0.01-0.2 instead of 1, and the plate under the light came out
+// black (docs/hard-cases.md).
 float st_extinctionAtGrid(vec3 g)
 {
   if (any(lessThan(g, vec3(-0.5))) || any(greaterThan(g, st_gridDims - vec3(0.5))))
   {
     return 0.0;
   }
-  if (st_stepSamples == 1)
-  {
-    return st_attenuationAt(st_gridToTexture(g));
-  }
-  return texture(st_fineExtinction, g * st_gridToMeansScale + st_gridToMeansOffset).r;
+  return st_attenuationAt(st_gridToTexture(g));
 }
 
 // The optical depth from texel j's face toward a positional light to the light, toLight
-// the grid vector from j to it: marched straight, one sample a texel,
+// the grid vector from j to it: marched straight, st_stepSamples samples a texel (one a
+// volume voxel),
 //   tau = len / n * sum_i sigma(j + (f + (i + 1/2) (e - f) / n) toLight)
 // f = 1/2 / max|toLight| (the face), e the fraction of the way at which the path leaves
 // the grid (1 if the light is inside: beyond the grid there is no matter), n =
-// ceil((e - f) max|toLight|) steps of at most a texel, len the world length of toLight.
+// ceil((e - f) max|toLight| st_stepSamples), len the world length of toLight.
 // For texels whose path to the light no slice before holds (scatterer_transport_sweep.glsl).
 float st_depthToLight(vec3 j, vec3 toLight)
 {
@@ -190,7 +190,7 @@ float st_depthToLight(vec3 j, vec3 toLight)
   {
     return 0.0;
   }
-  int n = min(int(ceil((end - from) * reach)), 4096);
+  int n = min(int(ceil((end - from) * reach * float(st_stepSamples))), 4096);
   float segment = (end - from) / float(n);
   float tau = 0.0;
   for (int i = 0; i < n; ++i)

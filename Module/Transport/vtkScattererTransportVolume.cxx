@@ -429,7 +429,7 @@ vtkScattererTransportVolume::DiffusionReadBack vtkScattererTransportVolume::Read
     back.ToGrid[a] = coarse.ToGrid[a];
     back.H[a] = uniforms.H[a];
   }
-  back.Block = coarse.Block;
+  std::copy(coarse.Block, coarse.Block + 3, back.Block);
   back.Medium = scatterer_gpu::DownloadTexture3D(t.CoarseMedium, 4);
   back.Occlusion = scatterer_gpu::DownloadTexture3D(t.CoarseOcclusion, 1);
   back.Source = scatterer_gpu::DownloadAtlas(t.CoarseSource, coarse.Dims, coarse.AtlasColumns);

@@ -161,7 +161,10 @@ public:
     bool Cropping = false;
     int CropFlags = 0;
     float CropMin[3] = { 0, 0, 0 }, CropMax[3] = { 0, 0, 0 }; ///< dataset coordinates
-    int Downsample = 2; ///< volume voxels per transport voxel along each axis
+    /// The transport scale: volume voxels per transport voxel along each axis, fewer
+    /// along an axis of long voxels (scatterer::illumination::transportStridesFor; the
+    /// voxels' lengths from TexToWorld: scatterer_gpu::VoxelLengths)
+    int Downsample = 2;
     /// A still frame's Downsample, which the diffusion's grid follows also when this
     /// build is coarser (a frame rendered while the user drags); 0: Downsample.
     int StillDownsample = 0;
@@ -278,7 +281,7 @@ public:
     int Dims[3] = { 0, 0, 0 };
     /// coarse texel c covers fine texels Block c + ToGrid + [0, Block)
     int ToGrid[3] = { 0, 0, 0 };
-    int Block = 1;
+    int Block[3] = { 1, 1, 1 };
     float H[3] = { 0, 0, 0 };     ///< coarse texel size along each axis, world units
     std::vector<float> Medium;    ///< albedo, sigma_t
     std::vector<float> Occlusion; ///< one value a texel: the ambient light's transmittance

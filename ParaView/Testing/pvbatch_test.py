@@ -144,14 +144,15 @@ def ct_head_ranks(args):
     header = scenes.read_mhd_header(args.data)
     spacing = [float(v) for v in header["ElementSpacing"].split()]
     dims = [int(v) for v in header["DimSize"].split()]
-    # The mapper's reach for the CT head in transport mode: the diffusion's 8 iterations
-    # of 4-voxel steps (longer than the 10 x mean spacing template radius), plus one
-    # transport voxel (InteractiveTransportScale 4 voxels).
-    reach = max(10.0 * sum(spacing) / 3.0, 8 * 4.0 * max(spacing)) + 4.0 * max(spacing)
-    needed = math.ceil(reach / min(spacing))
+    # The mapper's reach for the CT head in transport mode, in voxels along every axis (its
+    # grids count voxels): the diffusion's 8 iterations of 4-voxel steps (longer than the
+    # 10 x mean spacing template radius over the finest spacing), plus one transport voxel
+    # (InteractiveTransportScale 4 voxels); one layer more for the interpolation. Counted
+    # by the largest spacing (until 2026-12-07) the pieces asked for 58 layers.
+    needed = math.ceil(max(10.0 * sum(spacing) / 3.0 / min(spacing), 8 * 4.0) + 4.0) + 1
     ghosts = info["ScattererRequestedGhostLayersInfo"][0]
-    check(ghosts >= needed, "each piece asked for %d ghost layers >= reach %.1f mm / %.3f mm = %d"
-          % (ghosts, reach, min(spacing), needed))
+    check(ghosts == needed, "each piece asked for %d ghost layers: the reach of %d voxels and one"
+          " more" % (ghosts, needed - 1))
     check(info["ScattererRendersOwnedPartOnlyInfo"][0] == 1,
           "rank 0 holds ghost layers and renders only the part it owns")
     bounds = info["ScattererOwnedBoundsInfo"]

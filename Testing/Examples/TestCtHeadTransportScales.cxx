@@ -173,7 +173,8 @@ TEST_F(CtHeadTransportScales, ADraggingFrameKeepsTheStillColours)
       {
         mapper->SetTransportScale(2);
         mapper->SetInteractiveTransportScale(4);
-        scale = mapper->GetEffectiveTransportScale(this->Head->GetDimensions(), updateRate > 1.0);
+        scale = mapper->GetEffectiveTransportScale(
+          this->Head->GetDimensions(), this->Head->GetSpacing(), updateRate > 1.0);
       },
       updateRate);
   };
@@ -204,7 +205,8 @@ TEST_F(CtHeadTransportScales, AResampledHeadIsLitAsTheOriginal)
   resize->SetOutputDimensions((3 * dims[0]) / 2, (3 * dims[1]) / 2, (3 * dims[2]) / 2);
   resize->Update();
   vtkImageData* resampled = resize->GetOutput();
-  const int budget = static_cast<int>(scatterer::illumination::transportVoxelsAt(dims, 2));
+  const int two[3] = { 2, 2, 2 }; // the CT head's 1.5 mm slices: the scale on every axis
+  const int budget = static_cast<int>(scatterer::illumination::transportVoxelsAt(dims, two));
   int scales[2] = { 0, 0 };
   auto render = [&](vtkImageData* image, int maximumVoxels, int* scale)
   {
@@ -214,7 +216,8 @@ TEST_F(CtHeadTransportScales, AResampledHeadIsLitAsTheOriginal)
         mapper->SetMaximumTransportVoxels(maximumVoxels);
         if (scale)
         {
-          *scale = mapper->GetEffectiveTransportScale(image->GetDimensions(), false);
+          *scale =
+            mapper->GetEffectiveTransportScale(image->GetDimensions(), image->GetSpacing(), false);
         }
       });
   };

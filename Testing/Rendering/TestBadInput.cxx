@@ -10,6 +10,7 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLGPUVolumeRayCastMapper.h"
+#include "vtkOpenGLRenderWindow.h"
 #include "vtkOutputWindow.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
@@ -19,11 +20,13 @@
 #include "vtkRenderer.h"
 #include "vtkRendererCollection.h"
 #include "vtkScattererTemplateVolumeMapper.h"
+#include "vtkTextureObject.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <limits>
 #include <string>
 
@@ -129,6 +132,39 @@ TEST(BadInput, MissingScalarsRenderAsStock)
   EXPECT_TRUE(f.rfind("stock", 0) == 0) << f;
 }
 
+// An axis longer than the GPU's 3D textures: VTK cannot upload the volume and draws
+// nothing. The mapper says so once, naming the limit (it called the placement degenerate
+// at every frame).
+TEST(BadInput, AVolumeTooLongForA3DTextureIsSaidOnce)
+{
+  Capture capture;
+  Stage stage;
+  stage.Render();
+  const int limit = vtkTextureObject::GetMaximumTextureSize3D(
+    vtkOpenGLRenderWindow::SafeDownCast(scatterer_testing::SharedWindow()));
+  if (limit < 1 || limit > 16384)
+  {
+    GTEST_SKIP() << "3D texture limit " << limit;
+  }
+  vtkNew<vtkImageData> tall;
+  tall->SetDimensions(4, 4, limit + 1);
+  tall->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+  std::fill_n(static_cast<unsigned char*>(tall->GetScalarPointer()), tall->GetNumberOfPoints(),
+    static_cast<unsigned char>(200));
+  stage.Mapper->SetInputData(tall);
+  for (int frame = 0; frame < 3; ++frame)
+  {
+    stage.Render();
+  }
+  const std::string& text = capture.Window->Text;
+  const std::string said = "VTK did not upload it to the GPU (at most " + std::to_string(limit);
+  EXPECT_NE(text.find(said), std::string::npos) << text;
+  EXPECT_EQ(text.find(said), text.rfind(said)) << text;
+  EXPECT_EQ(text.find("degenerate"), std::string::npos) << text;
+  EXPECT_EQ(stage.Mapper->GetLastShaderFeatures().rfind("stock", 0), 0u)
+    << stage.Mapper->GetLastShaderFeatures();
+}
+
 TEST(BadInput, LabelIdsWithoutAMaterialAreNamedInAWarning)
 {
   Capture capture;
@@ -201,9 +237,10 @@ TEST(BadInput, AbsurdParametersAreClampedOrRejectedWithTheirName)
   EXPECT_EQ(stage.Mapper->GetWholeDimensions()[0], 0);
   // A whole set smaller than the piece (a stale setting) keeps the piece in the budget.
   const int large[3] = { 511, 511, 215 };
-  const int own = stage.Mapper->GetEffectiveTransportScale(large, false);
+  const double cubic[3] = { 1, 1, 1 };
+  const int own = stage.Mapper->GetEffectiveTransportScale(large, cubic, false);
   stage.Mapper->SetWholeDimensions(2, 2, 2);
-  EXPECT_EQ(stage.Mapper->GetEffectiveTransportScale(large, false), own);
+  EXPECT_EQ(stage.Mapper->GetEffectiveTransportScale(large, cubic, false), own);
   stage.Mapper->SetWholeDimensions(0, 0, 0);
   // Radii at the ends of the setter's range render lit in both modes.
   stage.Mapper->SetTemplateRadius(std::numeric_limits<double>::infinity());

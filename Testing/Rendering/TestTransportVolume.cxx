@@ -662,6 +662,54 @@ TEST(TransportVolume, PointLightInsideAMediumIsBeerLambertAlongTheRay)
   EXPECT_LT(worst, 0.03) << "the light entering a texel is not Beer-Lambert from the light";
 }
 
+// A point light 3 and 8 voxels above a dense plate, at TransportScale 2 with linear
+// interpolation (as users render): nothing lies between the light and the empty texels
+// above the plate, so their light is whole. The texels near the light march their paths
+// to it; through the texels' means, interpolated, they read the plate's extinction in the
+// empty texels above it (darkest 0.002 and 0.23), and the plate under a light 3 voxels
+// above came out black.
+TEST(TransportVolume, APointLightJustAboveASurfaceLightsIt)
+{
+  const int n = 96;
+  auto image = MakeVolume(n, 1.0, Slab(10, 17));
+  TransportScene scene(image, 0.8);
+  // A sharp step of the opacity at the value 100: the plate's face at z = 17.5.
+  vtkPiecewiseFunction* opacity = scene.Property->GetScalarOpacity();
+  opacity->RemoveAllPoints();
+  opacity->AddPoint(0, 0.0);
+  opacity->AddPoint(99, 0.0);
+  opacity->AddPoint(101, 0.8);
+  opacity->AddPoint(255, 0.8);
+  scene.Property->SetInterpolationTypeToLinear();
+  scene.Mapper->SetTransportScale(2);
+  for (double h : { 3.0, 8.0 })
+  {
+    scene.Light->SetPositional(true);
+    scene.Light->SetConeAngle(180.0);
+    scene.Light->SetPosition(47.8, 47.7, 17.0 + h);
+    scene.Light->SetFocalPoint(47.8, 47.7, 0.0);
+    const auto t = scene.Transmittance();
+    const int m = 49; // grid texel j at voxel 2 j
+    ASSERT_EQ(t.size(), static_cast<size_t>(m * m * m));
+    // Grid layers 9 and 10 (voxels z = 18 and 20, above the plate's face) within 24
+    // voxels of the light's foot.
+    float darkest = 1.0f;
+    for (int k : { 9, 10 })
+    {
+      float layer = 1.0f;
+      for (int j = 12; j <= 36; ++j)
+        for (int i = 12; i <= 36; ++i)
+        {
+          layer = std::min(layer, t[static_cast<size_t>(i) + m * (j + static_cast<size_t>(m) * k)]);
+        }
+      std::printf("light %.0f above: layer %d darkest %.4f\n", h, k, layer);
+      darkest = std::min(darkest, layer);
+    }
+    EXPECT_GT(darkest, 0.95f) << "empty texels above the plate read its extinction, light " << h
+                              << " voxels above it";
+  }
+}
+
 // VTK lights a positional light as a spot, cone and exponent applied, up to a cone of 90
 // degrees inclusive (vtkVolumeShaderComposer), so 90 lights as 89.99 does; the transport
 // took 90 as no spot at all (its exponent dropped), found by a sweep of cone angles.
@@ -2051,7 +2099,8 @@ TEST(TransportVolume, DiffusionAtlasHoldsTheJacobiSolveAndTheGatherReadsItTrilin
         for (int a = 0; a < 3; ++a)
         {
           const double c = std::min(
-            std::max((fine[a] - coarse.ToGrid[a] - 0.5 * (coarse.Block - 1)) / coarse.Block, 0.0),
+            std::max(
+              (fine[a] - coarse.ToGrid[a] - 0.5 * (coarse.Block[a] - 1)) / coarse.Block[a], 0.0),
             d[a] - 1.0);
           lo[a] = static_cast<int>(std::floor(c));
           hi[a] = std::min(lo[a] + 1, d[a] - 1);

@@ -9,7 +9,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
+#include <vector>
 
 namespace il = scatterer::illumination;
 
@@ -90,22 +92,79 @@ TEST(IlluminationSettings, ALargeVolumeIsBuiltAtTheScaleThatFitsTheBudget)
 {
   const int budget = il::MaximumTransportVoxels.Default;
   const int head[3] = { 256, 256, 108 }, mid[3] = { 383, 383, 161 }, big[3] = { 511, 511, 215 };
-  EXPECT_EQ(il::transportVoxelsAt(head, 2), 129LL * 129 * 55);
-  EXPECT_EQ(il::transportScaleFor(2, head, budget), 2);
-  EXPECT_EQ(il::transportScaleFor(2, mid, budget), 3);
-  EXPECT_EQ(il::transportScaleFor(2, big, budget), 4);
-  EXPECT_EQ(il::transportVoxelsAt(mid, 3), il::transportVoxelsAt(head, 2));
-  EXPECT_EQ(il::transportVoxelsAt(big, 4), il::transportVoxelsAt(head, 2));
+  // Their voxels (mm): 1.5 mm slices, less than twice the pixels: every axis at the scale.
+  const double headMm[3] = { 0.957, 0.957, 1.5 }, midMm[3] = { 0.640, 0.640, 1.006 },
+               bigMm[3] = { 0.479, 0.479, 0.754 }, cubic[3] = { 1, 1, 1 };
+  const int two[3] = { 2, 2, 2 }, three[3] = { 3, 3, 3 }, four[3] = { 4, 4, 4 };
+  EXPECT_EQ(il::transportVoxelsAt(head, two), 129LL * 129 * 55);
+  EXPECT_EQ(il::transportScaleFor(2, head, headMm, budget), 2);
+  EXPECT_EQ(il::transportScaleFor(2, mid, midMm, budget), 3);
+  EXPECT_EQ(il::transportScaleFor(2, big, bigMm, budget), 4);
+  EXPECT_EQ(il::transportVoxelsAt(mid, three), il::transportVoxelsAt(head, two));
+  EXPECT_EQ(il::transportVoxelsAt(big, four), il::transportVoxelsAt(head, two));
   EXPECT_EQ(il::interactiveTransportScaleFor(2, 4, 2), 4);
   EXPECT_EQ(il::interactiveTransportScaleFor(2, 4, 3), 6);
   EXPECT_EQ(il::interactiveTransportScaleFor(2, 4, 4), 8);
   EXPECT_EQ(il::interactiveTransportScaleFor(2, 2, 4), 4); // no coarser than asked: still's
-  EXPECT_EQ(il::transportScaleFor(2, big, 0), 2);          // 0: no limit
+  EXPECT_EQ(il::transportScaleFor(2, big, bigMm, 0), 2);   // 0: no limit
   const int small[3] = { 48, 48, 48 }, flat[3] = { 4000, 4000, 1 };
-  EXPECT_EQ(il::transportScaleFor(1, small, budget), 1);
-  EXPECT_LE(il::transportVoxelsAt(flat, il::transportScaleFor(1, flat, budget)), budget);
+  EXPECT_EQ(il::transportScaleFor(1, small, cubic, budget), 1);
+  const int flatScale = il::transportScaleFor(1, flat, cubic, budget);
+  const int flatStrides[3] = { flatScale, flatScale, flatScale };
+  EXPECT_LE(il::transportVoxelsAt(flat, flatStrides), budget);
   const int one[3] = { 1, 1, 1 };
-  EXPECT_EQ(il::transportScaleFor(3, one, 1), 3); // nothing to coarsen: it stops
+  EXPECT_EQ(il::transportScaleFor(3, one, cubic, 1), 3); // nothing to coarsen: it stops
+  // Long voxels take fewer per texel, so the budget counts more texels: a 1 x 1 x 3 mm
+  // volume of 256x256x86 holds 129x129x86 at scale 2, over the budget, and 86^3 at 3.
+  const int mri[3] = { 256, 256, 86 };
+  const double mriMm[3] = { 1, 1, 3 };
+  EXPECT_EQ(il::transportScaleFor(2, mri, mriMm, budget), 3);
+}
+
+// Voxels at least twice as long along an axis as along the shortest take fewer per
+// transport texel there, and per diffusion texel, so that both stay about as long as along
+// the shortest axis; below twice, every axis keeps the scale (the CT head's 1.5 mm slices
+// under 0.96 mm pixels).
+TEST(IlluminationSettings, AxesOfLongVoxelsTakeFewerVoxelsPerTexel)
+{
+  auto strides = [](int scale, double x, double y, double z)
+  {
+    const double spacing[3] = { x, y, z };
+    int s[3];
+    il::transportStridesFor(scale, spacing, s);
+    return std::vector<int>{ s[0], s[1], s[2] };
+  };
+  auto blocks = [](int still, std::vector<int> fine, double x, double y, double z)
+  {
+    const double spacing[3] = { x, y, z };
+    int b[3];
+    il::diffusionBlocksFor(still, fine.data(), spacing, b);
+    return std::vector<int>{ b[0], b[1], b[2] };
+  };
+  using V = std::vector<int>;
+  EXPECT_EQ(strides(2, 0.957, 0.957, 1.5), V({ 2, 2, 2 }));
+  EXPECT_EQ(blocks(2, { 2, 2, 2 }, 0.957, 0.957, 1.5), V({ 2, 2, 2 }));
+  EXPECT_EQ(strides(2, 1, 1, 3), V({ 2, 2, 1 }));             // texels 2 x 2 x 3 (were 2 x 2 x 6)
+  EXPECT_EQ(blocks(2, { 2, 2, 1 }, 1, 1, 3), V({ 2, 2, 1 })); // diffusion 4 x 4 x 3 (12 deep)
+  EXPECT_EQ(strides(2, 3, 1, 1), V({ 1, 2, 2 }));             // whichever axis is long
+  EXPECT_EQ(strides(2, -1, 1, -3), V({ 2, 2, 1 }));           // signs (a flipped axis) aside
+  EXPECT_EQ(strides(2, 1, 1, 2), V({ 2, 2, 1 }));             // twice: 2 x 2 x 2
+  EXPECT_EQ(blocks(2, { 2, 2, 1 }, 1, 1, 2), V({ 2, 2, 2 }));
+  EXPECT_EQ(strides(4, 1, 1, 1.9), V({ 4, 4, 4 }));     // below twice: as cubic voxels
+  EXPECT_EQ(strides(6, 0.5, 0.5, 2.5), V({ 6, 6, 1 })); // clinical CT: 3 x 3 x 2.5 mm
+  EXPECT_EQ(strides(2, 1, 1, 1e6), V({ 2, 2, 1 }));     // at least one voxel
+  // A frame the user drags (scale 4 over a still frame's 2) keeps the still frames'
+  // diffusion texels: 4 x 4 x 3 mm.
+  EXPECT_EQ(strides(4, 1, 1, 3), V({ 4, 4, 1 }));
+  EXPECT_EQ(blocks(2, { 4, 4, 1 }, 1, 1, 3), V({ 1, 1, 1 }));
+  // Lengths that are not positive and finite count as the shortest.
+  EXPECT_EQ(strides(2, 0, 1, 3), V({ 2, 2, 1 }));
+  EXPECT_EQ(strides(2, std::nan(""), 1, 1), V({ 2, 2, 2 }));
+  EXPECT_EQ(strides(2, 0, 0, 0), V({ 2, 2, 2 }));
+  // The texel's size for the ray's shared light reads: the geometric mean of its edges.
+  const double mm[3] = { 1, 1, 3 }, head[3] = { 0.957, 0.957, 1.5 };
+  EXPECT_NEAR(il::transportTexelSize(2, mm), std::cbrt(2.0 * 2.0 * 3.0), 1e-12);
+  EXPECT_NEAR(il::transportTexelSize(2, head), 2.0 * std::cbrt(0.957 * 0.957 * 1.5), 1e-12);
 }
 
 TEST(IlluminationSettings, RaySamplesShareALightReadWhileTheirSpanFitsInATexel)
@@ -127,4 +186,18 @@ TEST(IlluminationSettings, RaySamplesShareALightReadWhileTheirSpanFitsInATexel)
     EXPECT_EQ(il::lightReadStride(bad, 2.0), 1) << bad;
     EXPECT_EQ(il::lightReadStride(0.5, bad), 1) << bad;
   }
+}
+
+// The illumination's reach, over the finest spacing, is the ghost layers a piece of a split
+// volume needs: the transport's grids count voxels along every axis (fewer along an axis of
+// long voxels), so their terms are measured along the finest axis; the template radius is
+// 10 x the mean spacing.
+TEST(IlluminationSettings, TheReachCountsTheGridsVoxelsAlongTheFinestAxis)
+{
+  vtkNew<vtkScattererTemplateVolumeMapper> m;
+  const double cubic[3] = { 1, 1, 1 }, head[3] = { 0.957, 0.957, 1.5 }, thick[3] = { 0.5, 0.5, 5 };
+  EXPECT_DOUBLE_EQ(m->GetIlluminationReach(cubic), 8 * 4 + 4);
+  EXPECT_DOUBLE_EQ(m->GetIlluminationReach(head), (8 * 4 + 4) * 0.957); // 37 layers, not 58
+  // Radius 10 x 2 mm over the diffusion's 8 x 4 x 0.5: 22 mm, 45 layers (not 361).
+  EXPECT_DOUBLE_EQ(m->GetIlluminationReach(thick), 10 * 2.0 + 4 * 0.5);
 }
