@@ -29,10 +29,12 @@ void VoxelLengths(const int dims[3], const double texToWorld[16], double lengths
 struct TransportGrid
 {
   int Dims[3] = { 0, 0, 0 };
-  int Downsample = 1; ///< the transport scale it is placed at
-  int Strides[3] = { 1, 1,
-    1 }; ///< volume voxels per grid texel along each axis (transportStridesFor)
-  double Spacing[3] = { 1, 1, 1 }; ///< the voxels' world lengths the strides follow
+  /// The transport scale it is placed at.
+  int Downsample = 1;
+  /// Volume voxels per grid texel along each axis (transportStridesFor).
+  int Strides[3] = { 1, 1, 1 };
+  /// The voxels' world lengths the strides follow.
+  double Spacing[3] = { 1, 1, 1 };
   int FirstIndex[3] = { 0, 0, 0 }; ///< global index (in grid texels) of grid texel 0
   /// Grid texel j -> volume texture coordinate: j * GridToTex + GridToTexOffset.
   double GridToTex[3] = { 0, 0, 0 };
@@ -63,9 +65,8 @@ struct TransportGrid
   /**
    * Where this grid's positions lie on grid @p to (both placed on the same volume, at any
    * Downsample): position j here is j * scale + offset there. Texel j lies at global
-   * index (F + j) d (d the axis's stride), which on @p to is (F + j) d / d_to - F_to. An axis of
-   * one texel on
-   * @p to maps to its texel, 0.
+   * index (F + j) d (d the axis's stride), which on @p to is (F + j) d / d_to - F_to. An
+   * axis of one texel on @p to maps to its texel, 0.
    */
   void GetPositionsOn(const TransportGrid& to, float scale[3], float offset[3]) const;
 };

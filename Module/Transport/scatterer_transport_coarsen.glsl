@@ -4,9 +4,10 @@
 // Light transport volume, pass 0b: the medium on the diffusion's coarse grid and the
 // ambient occlusion of each coarse texel (all layers in one draw). Like pass 0a it runs
 // when the medium changes, not when a light moves. A coarse texel covers a block of
-// st_block^3 fine texels (st_block: 4 or 2, so that a coarse texel spans about 4
+// st_blockSize fine texels along each axis (4 or 2, so that a coarse texel spans about 4
 // volume voxels, or 2 fine texels at TransportScale 3 and above; 1 on a frame built
-// coarser while the user drags, whose coarse texels stay a still frame's): its medium
+// coarser while the user drags, whose coarse texels stay a still frame's; fewer along an
+// axis of long voxels: scatterer::illumination::diffusionBlocksFor): its medium
 // (albedo, sigma_t) is the mean of theirs, each the mean over its points (st_mediumAt
 // at each st_subsample: the centre, or 2^3 points on a frame built coarser while the
 // user drags). Never one point sample of a block: see ScattererTransportGrid.cxx,
@@ -26,8 +27,8 @@
 in vec2 texCoord;
 flat in float st_layer;          // this layer (scatterer_transport_layers_gs.glsl)
 uniform vec3 st_coarseDims;
-uniform vec3 st_coarseToGrid;      // coarse texel c covers fine positions c * st_block + st_coarseToGrid + [0, st_block)
-uniform vec3 st_blockSize; // fine texels a coarse texel spans along each axis
+uniform vec3 st_coarseToGrid;      // coarse texel c covers fine positions c * st_blockSize + st_coarseToGrid + [0, st_blockSize)
+uniform vec3 st_blockSize;         // fine texels a coarse texel spans along each axis
 uniform vec3 st_h;                 // coarse texel size along each axis, world units
 uniform int st_aoSteps;
 

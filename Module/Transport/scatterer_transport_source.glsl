@@ -4,7 +4,7 @@
 // Light transport volume, pass 3a: the multiple-scattering source on the diffusion's
 // coarse grid (its tiles that hold a medium, into its atlas), for the lights of this
 // build. A coarse texel's
-// source is the mean over its block of st_block^3 fine texels q of the light
+// source is the mean over its block of fine texels q (st_blockSize along each axis) of the light
 // scattered once there,
 //   S(q) = sigma_s(q) A(q)
 // with A the light arriving unscattered (scatterer_transport_arriving.glsl), the texel's
@@ -23,8 +23,8 @@
 in vec2 texCoord;
 uniform sampler3D st_fineScattering; // pass 0a: rgb = sigma_s (1 - exp(-2x)) / (2x)
 flat in float st_layer;            // this layer (scatterer_transport_tiles_vs.glsl)
-uniform vec3 st_coarseToGrid;      // coarse texel c covers fine positions c * st_block + st_coarseToGrid + [0, st_block)
-uniform vec3 st_blockSize; // fine texels a coarse texel spans along each axis
+uniform vec3 st_coarseToGrid;      // coarse texel c covers fine positions c * st_blockSize + st_coarseToGrid + [0, st_blockSize)
+uniform vec3 st_blockSize;         // fine texels a coarse texel spans along each axis
 uniform sampler3D st_coarseMedium; // pass 0b: rgb albedo, a sigma_t
 uniform vec3 st_h;                 // coarse texel size along each axis, world units
 
