@@ -93,6 +93,10 @@ struct VolumeSource
   /// SampleDistance, AutoAdjustSampleDistances and LockSampleDistanceToInputSpacing
   /// (world units; 0: unknown).
   double StillRayStep = 0.0;
+  /// This frame's step may be longer than StillRayStep: a frame rendered while the user
+  /// drags (the renderer's time below a second) with AutoAdjustSampleDistances on, whose
+  /// step VTK divides by half its reduction factor, known only once the ray caster draws.
+  bool RayStepMayGrow = false;
   /// A voxel's edges in the world (0: unknown).
   double VoxelEdges[3] = { 0.0, 0.0, 0.0 };
   int ScalarMode = 0, ArrayAccessMode = 0, ArrayId = -1;

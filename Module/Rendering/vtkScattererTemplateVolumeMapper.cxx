@@ -305,6 +305,10 @@ double vtkScattererTemplateVolumeMapper::GetIlluminationReach(const double spaci
   // whole volume.
   const double voxel = std::min({ sx > 0.0 ? sx : VTK_DOUBLE_MAX, sy > 0.0 ? sy : VTK_DOUBLE_MAX,
     sz > 0.0 ? sz : VTK_DOUBLE_MAX });
+  if (!(voxel < VTK_DOUBLE_MAX))
+  {
+    return 0.0; // no spacing to measure by (0, NaN): no reach
+  }
   const int stillScale = this->WholeDimensions[0] > 0
     ? this->GetEffectiveTransportScale(this->WholeDimensions, spacing, false)
     : this->TransportScale;
@@ -589,6 +593,8 @@ std::string vtkScattererTemplateVolumeMapper::PlanFrame(vtkRenderer* ren, vtkVol
   source.Cropped = this->GetCropping() != 0;
   source.SampleDistance = this->GetSampleDistance();
   this->StillSampling(vol, source.StillRayStep, source.VoxelEdges);
+  source.RayStepMayGrow =
+    this->GetAutoAdjustSampleDistances() && ren->GetAllocatedRenderTime() < 1.0;
   source.ScalarMode = this->ScalarMode;
   source.ArrayAccessMode = this->ArrayAccessMode;
   source.ArrayId = this->ArrayId;

@@ -798,3 +798,60 @@ TEST(MapperBehaviour, NonCubicVoxelsAreLitAsTheSameObjectInCubicOnes)
     EXPECT_LT(e.Lit.Worst, 120);
   }
 }
+
+TEST(MapperBehaviour, FramesDraggedWithLongerStepsReadTheLightAtEverySample)
+{
+  // VTK's default AutoAdjustSampleDistances lengthens the ray's step while the user drags,
+  // by 2 / its reduction factor (here at its floor, 1 / MaximumImageSampleDistance: 8 times
+  // the still step). Reads of the light planned for the still step, 2 samples ahead, then
+  // lay 2 texels deep in the ball: the dragged frame 2.15 levels from the still frame on
+  // average, up to 103; every sample reading the light, 1.25 and 53, the rest the long
+  // step's own (its first sample in the ball lies deeper; stock changes by 0.17).
+  const double cubic[3] = { 1.5, 1.5, 1.5 };
+  Scene scene;
+  scene.Image = SampledBall(cubic);
+  for (auto* m : { static_cast<vtkGPUVolumeRayCastMapper*>(scene.Mapper),
+         static_cast<vtkGPUVolumeRayCastMapper*>(scene.Stock) })
+  {
+    m->SetInputData(scene.Image);
+    m->AutoAdjustSampleDistancesOn();
+    m->SetMaximumImageSampleDistance(4);
+  }
+  vtkPiecewiseFunction* opacity = scene.Property->GetScalarOpacity();
+  opacity->RemoveAllPoints();
+  opacity->AddPoint(0, 0);
+  opacity->AddPoint(300, 0);
+  opacity->AddPoint(600, 0.8);
+  opacity->AddPoint(1000, 0.9);
+  vtkCamera* camera = scene.Renderer->GetActiveCamera();
+  camera->SetFocalPoint(48, 48, 48);
+  camera->SetPosition(48, -122, 178);
+  scene.Renderer->ResetCameraClippingRange();
+  const double still = Window()->GetDesiredUpdateRate();
+  const auto stillStock = scene.RenderStock();
+  const auto stillImage = scene.Render();
+  // Still: 1.5 mm steps (the voxel) against 3 mm texels.
+  EXPECT_NE(scene.Mapper->GetLastShaderFeatures().find("light-stride=2"), std::string::npos)
+    << scene.Mapper->GetLastShaderFeatures();
+  Window()->SetDesiredUpdateRate(1000.0);
+  std::vector<unsigned char> dragged, draggedStock;
+  for (int frame = 0; frame < 5; ++frame) // the reduction settles at its floor
+  {
+    dragged = scene.Render();
+  }
+  const std::string features = scene.Mapper->GetLastShaderFeatures();
+  for (int frame = 0; frame < 5; ++frame)
+  {
+    draggedStock = scene.RenderStock();
+  }
+  Window()->SetDesiredUpdateRate(still);
+  EXPECT_EQ(features.find("light-stride"), std::string::npos) << features;
+  const auto d = scatterer_testing::CompareRgb(stillImage, dragged, 16);
+  const auto ds = scatterer_testing::CompareRgb(stillStock, draggedStock, 16);
+  std::printf("dragged vs still: mean %.3f, worst %d (stock: %.3f, %d)\n", d.Mean, d.Worst, ds.Mean,
+    ds.Worst);
+  EXPECT_LT(d.Mean, 1.7);
+  EXPECT_LT(d.Worst, 80);
+  // And the next still frame is the still frame again.
+  EXPECT_LE(MaxDifference(scene.Render(), stillImage), 2);
+}

@@ -200,4 +200,6 @@ TEST(IlluminationSettings, TheReachCountsTheGridsVoxelsAlongTheFinestAxis)
   EXPECT_DOUBLE_EQ(m->GetIlluminationReach(head), (8 * 4 + 4) * 0.957); // 37 layers, not 58
   // Radius 10 x 2 mm over the diffusion's 8 x 4 x 0.5: 22 mm, 45 layers (not 361).
   EXPECT_DOUBLE_EQ(m->GetIlluminationReach(thick), 10 * 2.0 + 4 * 0.5);
+  const double none[3] = { 0, 0, 0 }; // was 3.6e300 once measured along the finest axis
+  EXPECT_EQ(m->GetIlluminationReach(none), 0.0);
 }
