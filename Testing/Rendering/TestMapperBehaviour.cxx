@@ -726,6 +726,25 @@ vtkSmartPointer<vtkImageData> SampledBall(const double spacing[3])
   return image;
 }
 
+// The scene's two mappers on SampledBall(spacing), opaque from the value 600 on (0.8 per
+// unit, none below 300), seen from above at an angle.
+void ShowSampledBall(Scene& scene, const double spacing[3])
+{
+  scene.Image = SampledBall(spacing);
+  scene.Mapper->SetInputData(scene.Image);
+  scene.Stock->SetInputData(scene.Image);
+  vtkPiecewiseFunction* opacity = scene.Property->GetScalarOpacity();
+  opacity->RemoveAllPoints();
+  opacity->AddPoint(0, 0);
+  opacity->AddPoint(300, 0);
+  opacity->AddPoint(600, 0.8);
+  opacity->AddPoint(1000, 0.9);
+  vtkCamera* camera = scene.Renderer->GetActiveCamera();
+  camera->SetFocalPoint(48, 48, 48);
+  camera->SetPosition(48, -122, 178);
+  scene.Renderer->ResetCameraClippingRange();
+}
+
 TEST(MapperBehaviour, TheSameSceneInAnotherLengthUnitIsLitAlike)
 {
   // The scene in metres or micrometres rather than its unit: spacing, opacity unit
@@ -766,23 +785,11 @@ TEST(MapperBehaviour, NonCubicVoxelsAreLitAsTheSameObjectInCubicOnes)
   for (int s = 0; s < 3; ++s)
   {
     Scene scene;
-    scene.Image = SampledBall(spacings[s]);
-    scene.Mapper->SetInputData(scene.Image);
-    scene.Stock->SetInputData(scene.Image);
-    vtkPiecewiseFunction* opacity = scene.Property->GetScalarOpacity();
-    opacity->RemoveAllPoints();
-    opacity->AddPoint(0, 0);
-    opacity->AddPoint(300, 0);
-    opacity->AddPoint(600, 0.8);
-    opacity->AddPoint(1000, 0.9);
+    ShowSampledBall(scene, spacings[s]);
     vtkColorTransferFunction* colour = scene.Property->GetRGBTransferFunction();
     colour->RemoveAllPoints();
     colour->AddRGBPoint(0, 1, 0.9, 0.8);
     colour->AddRGBPoint(1000, 1, 0.95, 0.9);
-    vtkCamera* camera = scene.Renderer->GetActiveCamera();
-    camera->SetFocalPoint(48, 48, 48);
-    camera->SetPosition(48, -122, 178);
-    scene.Renderer->ResetCameraClippingRange();
     lit[s] = scene.Render();
     stock[s] = scene.RenderStock();
   }
@@ -809,24 +816,13 @@ TEST(MapperBehaviour, FramesDraggedWithLongerStepsReadTheLightAtEverySample)
   // step's own (its first sample in the ball lies deeper; stock changes by 0.17).
   const double cubic[3] = { 1.5, 1.5, 1.5 };
   Scene scene;
-  scene.Image = SampledBall(cubic);
+  ShowSampledBall(scene, cubic);
   for (auto* m : { static_cast<vtkGPUVolumeRayCastMapper*>(scene.Mapper),
          static_cast<vtkGPUVolumeRayCastMapper*>(scene.Stock) })
   {
-    m->SetInputData(scene.Image);
     m->AutoAdjustSampleDistancesOn();
     m->SetMaximumImageSampleDistance(4);
   }
-  vtkPiecewiseFunction* opacity = scene.Property->GetScalarOpacity();
-  opacity->RemoveAllPoints();
-  opacity->AddPoint(0, 0);
-  opacity->AddPoint(300, 0);
-  opacity->AddPoint(600, 0.8);
-  opacity->AddPoint(1000, 0.9);
-  vtkCamera* camera = scene.Renderer->GetActiveCamera();
-  camera->SetFocalPoint(48, 48, 48);
-  camera->SetPosition(48, -122, 178);
-  scene.Renderer->ResetCameraClippingRange();
   const double still = Window()->GetDesiredUpdateRate();
   const auto stillStock = scene.RenderStock();
   const auto stillImage = scene.Render();
