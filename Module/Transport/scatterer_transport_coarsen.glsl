@@ -34,15 +34,15 @@ uniform int st_aoSteps;
 
 void main()
 {
-  ivec3 st_block = ivec3(st_blockSize + 0.5);
+  ivec3 block = ivec3(st_blockSize + 0.5);
   vec3 c = vec3(floor(texCoord * st_coarseDims.xy), st_layer);
-  vec3 b = vec3(st_block);
+  vec3 b = vec3(block);
   vec3 fine = c * b + st_coarseToGrid;
   vec4 medium = vec4(0.0);
   int points = st_subsamples * st_subsamples * st_subsamples;
-  for (int k = 0; k < st_block.x * st_block.y * st_block.z; ++k)
+  for (int k = 0; k < block.x * block.y * block.z; ++k)
   {
-    vec3 o = vec3(float(k % st_block.x), float((k / st_block.x) % st_block.y), float(k / (st_block.x * st_block.y)));
+    vec3 o = vec3(float(k % block.x), float((k / block.x) % block.y), float(k / (block.x * block.y)));
     for (int p = 0; p < points; ++p)
     {
       // Outside the grid the medium is empty.

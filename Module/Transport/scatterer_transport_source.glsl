@@ -59,18 +59,18 @@ float st_escape(ivec3 c)
 
 void main()
 {
-  ivec3 st_block = ivec3(st_blockSize + 0.5);
+  ivec3 block = ivec3(st_blockSize + 0.5);
   ivec3 c = ivec3(ivec2(floor(texCoord * st_coarseDims.xy)), int(st_layer));
-  ivec3 fine = c * st_block + ivec3(st_coarseToGrid);
+  ivec3 fine = c * block + ivec3(st_coarseToGrid);
   ivec3 dims = ivec3(st_gridDims);
   vec3 source = vec3(0.0);
-  for (int k = 0; k < st_block.x * st_block.y * st_block.z; ++k)
+  for (int k = 0; k < block.x * block.y * block.z; ++k)
   {
-    ivec3 q = fine + ivec3(k % st_block.x, (k / st_block.x) % st_block.y, k / (st_block.x * st_block.y));
+    ivec3 q = fine + ivec3(k % block.x, (k / block.x) % block.y, k / (block.x * block.y));
     if (all(greaterThanEqual(q, ivec3(0))) && all(lessThan(q, dims)))
     {
       source += texelFetch(st_fineScattering, q, 0).rgb * st_arrivingAtTexel(q);
     }
   }
-  gl_FragData[0] = vec4(source / float(st_block.x * st_block.y * st_block.z), st_escape(c));
+  gl_FragData[0] = vec4(source / float(block.x * block.y * block.z), st_escape(c));
 }
