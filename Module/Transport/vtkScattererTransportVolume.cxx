@@ -35,9 +35,31 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
+#include <cstdio>
 #include <utility>
 
 vtkStandardNewMacro(vtkScattererTransportVolume);
+
+namespace
+{
+// The OpenGL errors raised since the last call, taken off the context: the first of
+// them, or GL_NO_ERROR. At most a few are taken (glGetError reports one flag at a time,
+// and without a current context some implementations report one for ever).
+GLenum TakeOpenGLErrors()
+{
+  GLenum first = GL_NO_ERROR;
+  for (int i = 0; i < 16; ++i)
+  {
+    const GLenum e = glGetError();
+    if (e == GL_NO_ERROR)
+    {
+      break;
+    }
+    first = first == GL_NO_ERROR ? e : first;
+  }
+  return first;
+}
+}
 
 struct vtkScattererTransportVolume::vtkInternals
 {
@@ -55,6 +77,10 @@ struct vtkScattererTransportVolume::vtkInternals
 
   std::uint64_t Key = 0; // scatterer_gpu::TransportKey of the inputs of the last build
   bool HasKey = false;
+  // The inputs of a build the OpenGL implementation refused (an error raised by its
+  // passes), and what it reported: the same inputs are not built again in this context.
+  std::uint64_t RefusedKey = 0;
+  std::string Refused;
   // scatterer_gpu::MediumKey of what the medium passes' textures hold, and
   // Textures.MediumAllocations when they were drawn
   std::uint64_t MediumKey = 0;
@@ -251,6 +277,7 @@ void vtkScattererTransportVolume::vtkInternals::Release(vtkWindow* window)
   this->HasKey = false;
   this->HasMedium = false;
   this->Fluence = nullptr;
+  this->Refused.clear();
 }
 
 vtkScattererTransportVolume::vtkScattererTransportVolume()
@@ -293,6 +320,11 @@ bool vtkScattererTransportVolume::Update(
     s.LastStages = StageMilliseconds();
     return true;
   }
+  if (!s.Refused.empty() && s.Context == window && key == s.RefusedKey)
+  {
+    why = s.Refused;
+    return false;
+  }
   const auto start = std::chrono::steady_clock::now();
   s.Context = window;
   s.SweepLinesInParallel = this->SweepLinesInParallel;
@@ -325,7 +357,28 @@ bool vtkScattererTransportVolume::Update(
   {
     return false;
   }
-  if (!s.RunPasses(built, this->SynchronousTiming, why))
+  // A pass the OpenGL implementation refuses (an error raised as it draws: a format, a
+  // layered target or a program state it does not take) leaves the light texture as it
+  // was, black at a first build: the volume then renders as stock, not black. The errors
+  // raised before the build are not its own, so they are taken off first.
+  TakeOpenGLErrors();
+  if (this->RaiseOpenGLErrorForTesting)
+  {
+    glEnable(GL_INVALID_ENUM); // not a capability: raises GL_INVALID_ENUM
+    this->RaiseOpenGLErrorForTesting = false;
+  }
+  const bool ran = s.RunPasses(built, this->SynchronousTiming, why);
+  const GLenum error = TakeOpenGLErrors();
+  if (ran && error != GL_NO_ERROR)
+  {
+    char code[16];
+    std::snprintf(code, sizeof(code), "0x%04X", static_cast<unsigned>(error));
+    why = std::string("OpenGL reported error ") + code +
+      " while its passes drew on this OpenGL implementation";
+    s.RefusedKey = key;
+    s.Refused = why;
+  }
+  if (!ran || error != GL_NO_ERROR)
   {
     s.HasKey = false;
     return false;
@@ -509,6 +562,10 @@ void vtkScattererTransportVolume::PrintSelf(ostream& os, vtkIndent indent)
        << " x " << s.DimGrid.Dims[2] << "\n";
   }
   os << indent << "Builds: " << s.Builds << "\n";
+  if (!s.Refused.empty())
+  {
+    os << indent << "Refused: " << s.Refused << "\n";
+  }
   os << indent << "MediumBuilds: " << s.MediumBuilds << "\n";
   os << indent << "LastBuildMilliseconds: " << s.LastMs << "\n";
   const StageMilliseconds& t = s.LastStages;

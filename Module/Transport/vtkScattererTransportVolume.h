@@ -339,12 +339,22 @@ public:
   vtkBooleanMacro(SweepLinesInParallel, bool);
   ///@}
 
+  ///@{
+  /**
+   * For tests: raise an OpenGL error as the next rebuild starts, as an OpenGL
+   * implementation that refuses one of its passes would. Update then fails, saying so,
+   * and the same inputs are not built again in this context.
+   */
+  vtkSetMacro(RaiseOpenGLErrorForTesting, bool);
+  ///@}
+
 protected:
   vtkScattererTransportVolume();
   ~vtkScattererTransportVolume() override;
 
   bool SynchronousTiming = false;
   bool SweepLinesInParallel = true;
+  bool RaiseOpenGLErrorForTesting = false;
 
 private:
   vtkScattererTransportVolume(const vtkScattererTransportVolume&) = delete;

@@ -20,6 +20,7 @@
 #include "vtkRenderer.h"
 #include "vtkRendererCollection.h"
 #include "vtkScattererTemplateVolumeMapper.h"
+#include "vtkScattererTransportVolume.h"
 #include "vtkTextureObject.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
@@ -163,6 +164,34 @@ TEST(BadInput, AVolumeTooLongForA3DTextureIsSaidOnce)
   EXPECT_EQ(text.find("degenerate"), std::string::npos) << text;
   EXPECT_EQ(stage.Mapper->GetLastShaderFeatures().rfind("stock", 0), 0u)
     << stage.Mapper->GetLastShaderFeatures();
+}
+
+// An OpenGL implementation that refuses one of the light transport volume's passes (an
+// error raised as it draws) left the light texture as it was: a black volume at a first
+// build, and the failed build tried again at every frame. The mapper says so once and
+// renders as the stock mapper would.
+TEST(BadInput, AnOpenGLErrorWhileBuildingTheLightIsSaidOnceAndRendersAsStock)
+{
+  Capture capture;
+  Stage stage;
+  stage.Mapper->IlluminationEnabledOff();
+  const std::vector<unsigned char> stock = stage.RenderShellBallPlate();
+  stage.Mapper->IlluminationEnabledOn();
+  stage.Mapper->GetTransportVolume()->SetRaiseOpenGLErrorForTesting(true);
+  std::vector<unsigned char> refused;
+  for (int frame = 0; frame < 3; ++frame)
+  {
+    refused = stage.Render();
+  }
+  const std::string& text = capture.Window->Text;
+  const std::string said = "OpenGL reported error 0x0500";
+  EXPECT_NE(text.find(said), std::string::npos) << text;
+  EXPECT_EQ(text.find(said), text.rfind(said)) << text;
+  EXPECT_EQ(stage.Mapper->GetTransportVolume()->GetBuildCount(), 0);
+  EXPECT_EQ(stage.Mapper->GetLastShaderFeatures().rfind("stock", 0), 0u)
+    << stage.Mapper->GetLastShaderFeatures();
+  ASSERT_FALSE(stock.empty());
+  EXPECT_EQ(refused, stock);
 }
 
 TEST(BadInput, LabelIdsWithoutAMaterialAreNamedInAWarning)
