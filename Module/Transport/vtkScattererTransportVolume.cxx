@@ -77,8 +77,9 @@ struct vtkScattererTransportVolume::vtkInternals
 
   std::uint64_t Key = 0; // scatterer_gpu::TransportKey of the inputs of the last build
   bool HasKey = false;
-  // The inputs of a build the OpenGL implementation refused (an error raised by its
-  // passes), and what it reported: the same inputs are not built again in this context.
+  // The inputs of a build the OpenGL implementation refused (programs that do not
+  // compile, textures not made, an error raised by its passes), and why: the same inputs
+  // are not built again in this context.
   std::uint64_t RefusedKey = 0;
   std::string Refused;
   // scatterer_gpu::MediumKey of what the medium passes' textures hold, and
@@ -343,19 +344,29 @@ bool vtkScattererTransportVolume::Update(
     why = "the volume's placement is degenerate (zero spacing or a singular matrix)";
     return false;
   }
+  // A build the OpenGL implementation refuses (its programs do not compile, its textures
+  // are not made, or it raises an error as the passes draw) is not tried again for the
+  // same inputs in this context: every frame would compile or draw again, to fail again.
+  const auto refuse = [&s, key, &why]()
+  {
+    s.HasKey = false;
+    s.RefusedKey = key;
+    s.Refused = why;
+    return false;
+  };
   const std::string variant = scatterer_gpu::TransportPrograms::Variant(built);
   if (!s.Programs.IsCreated(variant))
   {
     if (!s.Programs.Create(window, variant, why))
     {
-      return false;
+      return refuse();
     }
     s.Framebuffer->SetContext(window);
   }
   if (!s.Textures.AllocateFine(window, s.Grid.Dims,
         scatterer_gpu::ExtinctionSampling::For(built.Downsample).UsesTexelMeans(), why))
   {
-    return false;
+    return refuse();
   }
   // A pass the OpenGL implementation refuses (an error raised as it draws: a format, a
   // layered target or a program state it does not take) leaves the light texture as it
@@ -367,21 +378,19 @@ bool vtkScattererTransportVolume::Update(
     glEnable(GL_INVALID_ENUM); // not a capability: raises GL_INVALID_ENUM
     this->RaiseOpenGLErrorForTesting = false;
   }
-  const bool ran = s.RunPasses(built, this->SynchronousTiming, why);
+  if (!s.RunPasses(built, this->SynchronousTiming, why))
+  {
+    TakeOpenGLErrors();
+    return refuse();
+  }
   const GLenum error = TakeOpenGLErrors();
-  if (ran && error != GL_NO_ERROR)
+  if (error != GL_NO_ERROR)
   {
     char code[16];
     std::snprintf(code, sizeof(code), "0x%04X", static_cast<unsigned>(error));
     why = std::string("OpenGL reported error ") + code +
       " while its passes drew on this OpenGL implementation";
-    s.RefusedKey = key;
-    s.Refused = why;
-  }
-  if (!ran || error != GL_NO_ERROR)
-  {
-    s.HasKey = false;
-    return false;
+    return refuse();
   }
 
   if (this->SynchronousTiming)
