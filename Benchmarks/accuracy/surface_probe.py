@@ -4,8 +4,8 @@
     PYTHONPATH=build/lib/python3.11/dist-packages LD_LIBRARY_PATH=build/lib \\
       bash scripts/xvfb.sh /usr/bin/python3 Benchmarks/accuracy/surface_probe.py
 
-Each scene is drawn by the mapper's defaults and by stock Phong (vtkOpenGLGPUVolumeRayCast-
-Mapper, Shade on) at 200 x 200 pixels; one CSV row per scene.
+Each scene is drawn by the mapper's defaults and by stock Phong
+(vtkOpenGLGPUVolumeRayCastMapper, Shade on) at 200 x 200 pixels; one CSV row per scene.
 
 - torus: a smooth torus (64^3, the scalar ramping over a few voxels, a step of the opacity
   at 100) coloured (0.85, 0.6, 0.4), at an opacity of 1, 0.95 and 0.8 per voxel, under the
@@ -31,15 +31,7 @@ import numpy as np
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPiecewiseFunction
 from vtkmodules.vtkIOImage import vtkPNGWriter
-from vtkmodules.vtkRenderingCore import (
-    vtkColorTransferFunction,
-    vtkLight,
-    vtkRenderer,
-    vtkRenderWindow,
-    vtkVolume,
-    vtkVolumeProperty,
-    vtkWindowToImageFilter,
-)
+import vtkmodules.vtkRenderingCore as core
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (the OpenGL factories)
 from vtkmodules.vtkRenderingVolumeOpenGL2 import vtkOpenGLGPUVolumeRayCastMapper
 
@@ -77,10 +69,10 @@ def volume_property(opacity, colour, shade):
     o = vtkPiecewiseFunction()
     for x, y in [(0, 0), (99, 0), (101, opacity), (255, opacity)]:
         o.AddPoint(x, y)
-    c = vtkColorTransferFunction()
+    c = core.vtkColorTransferFunction()
     for x in (0, 255):
         c.AddRGBPoint(x, *colour)
-    p = vtkVolumeProperty()
+    p = core.vtkVolumeProperty()
     p.SetScalarOpacity(o)
     p.SetColor(c)
     p.SetInterpolationTypeToLinear()
@@ -94,15 +86,15 @@ def render(window, image, prop, phong, setup):
     setup(renderer) places the camera and the lights."""
     mapper = vtkOpenGLGPUVolumeRayCastMapper() if phong else vtkScattererTemplateVolumeMapper()
     mapper.SetInputData(image)
-    volume = vtkVolume()
+    volume = core.vtkVolume()
     volume.SetMapper(mapper)
     volume.SetProperty(prop)
-    renderer = vtkRenderer()
+    renderer = core.vtkRenderer()
     renderer.AddVolume(volume)
     setup(renderer)
     window.AddRenderer(renderer)
     window.Render()
-    grab = vtkWindowToImageFilter()
+    grab = core.vtkWindowToImageFilter()
     grab.SetInput(window)
     grab.ReadFrontBufferOff()
     grab.Update()
@@ -154,7 +146,7 @@ def torus_setup(light):
         renderer.ResetCameraClippingRange()
         if light == "+z":
             renderer.AutomaticLightCreationOff()
-            l = vtkLight()
+            l = core.vtkLight()
             l.SetLightTypeToSceneLight()
             l.PositionalOff()
             l.SetPosition(c, c, c + (n - 1) * 3)
@@ -169,7 +161,7 @@ def tube_setup(light_x):
         n = 96
         c = (n - 1) / 2
         renderer.AutomaticLightCreationOff()
-        l = vtkLight()
+        l = core.vtkLight()
         l.SetLightTypeToSceneLight()
         l.PositionalOn()
         l.SetPosition(light_x, c + 0.3, c + 0.2)
@@ -205,7 +197,7 @@ def main():
     args = parser.parse_args()
     if args.output:
         os.makedirs(args.output, exist_ok=True)
-    window = vtkRenderWindow()
+    window = core.vtkRenderWindow()
     window.SetSize(PIXELS, PIXELS)
     window.SetMultiSamples(0)
     window.SetDesiredUpdateRate(0.0001)
