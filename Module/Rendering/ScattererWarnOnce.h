@@ -1,7 +1,8 @@
-// Warnings about a scene (an unsupported input, lights or materials beyond a limit),
-// said once per mapper: a scene renders many frames, and the same warning every frame
-// would bury everything else. Raised on the mapper (its WarningEvent observers, or the
-// output window), as the mapper's own vtkWarningMacro would.
+// Warnings about a scene (an unsupported input, lights or materials beyond a limit), and
+// errors that would repeat at every frame, said once per mapper: a scene renders many
+// frames, and the same message every frame would bury everything else. Raised on the
+// mapper (its WarningEvent and ErrorEvent observers, or the output window), as the
+// mapper's own vtkWarningMacro and vtkErrorMacro would.
 #ifndef ScattererWarnOnce_h
 #define ScattererWarnOnce_h
 
@@ -13,7 +14,7 @@
 
 namespace scatterer_render
 {
-/** Raises each distinct warning once on its owner. */
+/** Raises each distinct warning or error once on its owner. */
 class WarnOnce
 {
 public:
@@ -42,6 +43,17 @@ public:
     if (this->Said.insert("topic:" + topic).second)
     {
       vtkWarningWithObjectMacro(this->Owner, << what);
+    }
+  }
+
+  /** Raises @p what on the owner as an error (vtkErrorMacro's), unless it was said
+   * before: a failure that repeats at every frame (a transport volume that cannot be
+   * built) is said once too. */
+  void Error(const std::string& what)
+  {
+    if (this->Said.insert("error:" + what).second)
+    {
+      vtkErrorWithObjectMacro(this->Owner, << what);
     }
   }
 

@@ -74,9 +74,6 @@ struct vtkScattererTemplateVolumeMapper::vtkInternals
   scatterer_render::ShaderCompileCheck CompileCheck;
   // Shader texts that failed to compile here: not tried again.
   scatterer_render::KeySet FailedShaders;
-  // The light transport volume's build errors said so far: each said once, as the
-  // warnings are (a scene renders many frames).
-  std::set<std::string> SaidTransportErrors;
   scatterer_render::DecoratedVolumes Volumes;
   // A piece of a distributed volume: the light from the other pieces (or none).
   vtkSmartPointer<vtkScattererLightExchange> LightExchange;
@@ -685,9 +682,9 @@ std::string vtkScattererTemplateVolumeMapper::UpdateTransport(vtkRenderer* ren, 
   std::string error;
   const std::string stock =
     in.Transport.Update(ren, vol, plan, parameters, in.Templates, source, in.Warn, error);
-  if (!error.empty() && in.SaidTransportErrors.insert(error).second)
+  if (!error.empty())
   {
-    vtkErrorMacro(<< error);
+    in.Warn.Error(error); // a build that fails fails at every frame: said once
   }
   if (stock.empty())
   {
