@@ -55,7 +55,7 @@ vtkTextureObject* Diffuse(const TransportPass& pass, const CoarseUniforms& u, in
   program->SetUniformi("st_atlasColumns", u.AtlasColumns);
   ScopedSampler medium(program, "st_coarseMedium", textures.CoarseMedium);
   ScopedSampler source(program, "st_coarseSource", textures.CoarseSource);
-  // rgb alone: alpha keeps the occlusion the atlases start with (pass 0d).
+  // rgb alone: alpha keeps the extinction the atlases start with (pass 0d).
   // The caller's mask is restored on return, whatever it was.
   vtkOpenGLState* state = pass.Window->GetState();
   vtkOpenGLState::ScopedglColorMask mask(state);
@@ -104,6 +104,7 @@ bool SolveMultipleScattering(
 ScopedScatteredLight::ScopedScatteredLight(
   vtkShaderProgram* program, const TransportPass& pass, vtkTextureObject* fluence)
   : Fluence(program, "st_fluence", fluence)
+  , Occlusion(program, "st_occlusion", pass.Textures.CoarseOcclusion)
 {
   const CoarseGrid coarse =
     CoarseGrid::Over(pass.Grid, pass.In.Downsample, pass.In.StillDownsample);

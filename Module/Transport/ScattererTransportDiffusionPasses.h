@@ -52,6 +52,7 @@ public:
 
 private:
   ScopedSampler Fluence;
+  ScopedSampler Occlusion;
 };
 }
 

@@ -137,11 +137,13 @@ CoarseGrid CoarseGrid::Over(const TransportGrid& grid, int downsample, int still
   // scale than s, and its coarse texels stay as large as a still frame's: blocks of 8 voxels (scale
   // 4 on the CT head, 2 fine texels a block) outweighed the skull, a few voxels thick, by the soft
   // tissue and air around it, and tinted the bone pink and mottled while the user dragged (ivory
-  // when they let go). Such a frame's fine texels are then blocks of their own, and their
-  // medium the mean of 2^3 points (Subsamples) instead of one, about as far apart as a
-  // still frame's fine texels. A still frame's own points stay its texels' centres, so
-  // that a volume resampled more finely, built coarser under MaximumTransportVoxels, is
-  // lit as the original (2^3 points there moved the 511x511x215 CT head away from it).
+  // when they let go). Such a frame's fine texels are then blocks of their own, and pass 0b
+  // takes their medium as the mean of 2^3 points (Subsamples) instead of one, about as far
+  // apart as a still frame's fine texels. A still frame's pass 0b keeps its texels'
+  // centres, so that a volume resampled more finely, built coarser under
+  // MaximumTransportVoxels, is lit as the original (2^3 points there moved the
+  // 511x511x215 CT head away from it). Pass 0a takes a texel's medium over the points of
+  // its mean extinction on every frame (scatterer_transport_medium.glsl).
   const int fine = std::max(1, downsample);
   const int still = stillDownsample > 0 ? stillDownsample : fine;
   CoarseGrid coarse;

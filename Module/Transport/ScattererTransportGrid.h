@@ -86,7 +86,7 @@ struct CoarseGrid
     return { static_cast<float>(this->Block[0]), static_cast<float>(this->Block[1]),
       static_cast<float>(this->Block[2]) };
   }
-  /// Points per axis each fine texel's medium is the mean of in passes 0a and 0b: 2 on a
+  /// Points per axis each fine texel's medium is the mean of in pass 0b: 2 on a
   /// frame built at twice a still frame's scale or more (while the user drags), so that
   /// its medium is sampled about as finely as a still frame's; 1 (the centre) otherwise.
   int Subsamples = 1;

@@ -23,7 +23,7 @@ namespace scatterer_gpu
 namespace
 {
 // Pass 0a: the fine texels' scattering coefficient and gather.
-void DrawFineMedium(const TransportPass& pass, const CoarseGrid& coarse)
+void DrawFineMedium(const TransportPass& pass)
 {
   const vtkScattererTransportVolume::Inputs& in = pass.In;
   vtkShaderProgram* program = UseProgram(pass.Window, pass.Programs.Medium.get());
@@ -35,7 +35,6 @@ void DrawFineMedium(const TransportPass& pass, const CoarseGrid& coarse)
     meanSize += static_cast<float>(pass.Grid.TexelLength(a)) / 3.0f;
   }
   program->SetUniformf("st_fineSize", meanSize);
-  program->SetUniformi("st_subsamples", coarse.Subsamples);
   const ExtinctionSampling sampling = ExtinctionSampling::For(in.Downsample);
   program->SetUniformi("st_meanPoints", sampling.MeanPoints);
   ScopedVolume volume(program, in);
@@ -128,7 +127,7 @@ void DrawCoarseMedium(const TransportPass& pass, const CoarseGrid& coarse)
     { pass.Textures.CoarseMedium, pass.Textures.CoarseOcclusion }, coarse.Dims[2]);
 }
 
-// Pass 0d: both fluence atlases start as no light, the occlusion in alpha.
+// Pass 0d: both fluence atlases start as no light, each coarse texel's extinction in alpha.
 void DrawFluenceStart(const TransportPass& pass, const CoarseGrid& coarse, const int atlas[2])
 {
   const CoarseUniforms u(pass.Grid, coarse);
@@ -136,7 +135,7 @@ void DrawFluenceStart(const TransportPass& pass, const CoarseGrid& coarse, const
   vtkShaderProgram* program = UseProgram(pass.Window, quad);
   program->SetUniform3f("st_coarseDims", u.Dims);
   program->SetUniformi("st_atlasColumns", u.AtlasColumns);
-  ScopedSampler occlusion(program, "st_occlusion", pass.Textures.CoarseOcclusion);
+  ScopedSampler medium(program, "st_coarseMedium", pass.Textures.CoarseMedium);
   pass.Window->GetState()->vtkglViewport(0, 0, atlas[0], atlas[1]);
   for (vtkTextureObject* fluence : pass.Textures.Fluence)
   {
@@ -159,7 +158,7 @@ bool BuildMediumTextures(const TransportPass& pass, std::string& why)
     return false;
   }
   pass.Window->GetState()->vtkglDisable(GL_BLEND);
-  DrawFineMedium(pass, coarse);
+  DrawFineMedium(pass);
   pass.Textures.LayerGathers = CountLayerGathers(pass);
   DrawCoarseMedium(pass, coarse);
   DrawFluenceStart(pass, coarse, atlas);

@@ -38,7 +38,7 @@ struct TransportPrograms
   std::unique_ptr<vtkOpenGLQuadHelper> Medium;  ///< pass 0a: what no light changes, fine grid
   std::unique_ptr<vtkOpenGLQuadHelper> Coarsen; ///< pass 0b: medium and occlusion, coarse grid
   std::unique_ptr<vtkOpenGLQuadHelper> Count;   ///< pass 0c: which gather each layer needs
-  /// pass 0d: the fluence atlases' start, the occlusion in alpha
+  /// pass 0d: the fluence atlases' start, each coarse texel's extinction in alpha
   std::unique_ptr<vtkOpenGLQuadHelper> FluenceStart;
   std::unique_ptr<vtkOpenGLQuadHelper> Source;  ///< pass 3a: light scattered once, coarse grid
   std::unique_ptr<vtkOpenGLQuadHelper> Diffuse; ///< pass 3b: one Jacobi iteration

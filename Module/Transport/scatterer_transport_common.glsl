@@ -278,10 +278,11 @@ vec3 st_texelPoint(vec3 j, int k, int n)
   return j + (s + vec3(0.5)) / float(n) - vec3(0.5);
 }
 
-// The diffusion's medium passes (0a, 0b) take a fine texel's medium as the mean over
+// The coarse medium's pass (0b) takes each fine texel's medium as the mean over
 // st_subsamples^3 points spread evenly over the texel (CoarseGrid::Subsamples: 2 on a
 // frame built coarser while the user drags, else 1, the texel's centre): point k of
-// texel j.
+// texel j. Pass 0a takes its texel's over the points of its mean extinction
+// (scatterer_transport_medium.glsl).
 uniform int st_subsamples;
 vec3 st_subsample(vec3 j, int k)
 {

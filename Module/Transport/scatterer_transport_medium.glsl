@@ -12,10 +12,9 @@
 //   2x along the light, A falls as A_in exp(-s), and its mean is
 //     A_in (1 - exp(-2x)) / (2x),   x = OcclusionStrength sigma_t(q) h / 2,
 //   so the texel holds sigma_s(q) (1 - exp(-2x)) / (2x), sigma_s = sigma_t albedo, h a
-//   fine texel's mean size, sigma_s and sigma_t the means over the texel's points
-//   (st_subsample: its centre, or 2^3 points on a frame built coarser while the user
-//   drags); exact for a light along an axis (one across the texel's diagonal crosses up
-//   to sqrt(3) h of it). In a dense texel that is sigma_s A_in / (2x): the light the
+//   fine texel's mean size, sigma_s and sigma_t the means over the texel's points (those
+//   of output 2); exact for a light along an axis (one across the texel's diagonal
+//   crosses up to sqrt(3) h of it). In a dense texel that is sigma_s A_in / (2x): the light the
 //   texel's first mean free paths scatter, not sigma_s A at its centre, which vanishes
 //   (exp(-x)) and took the multiple scattering out of dense matter.
 // - output 1 (FineGather, st_storedGather): which gather the texel takes
@@ -23,11 +22,18 @@
 //   no photon of m's templates lands in another material (the photons then need no
 //   material look-up: no tint, no rescale); m + 8 (ST_MIXED) when one does. And whether
 //   it is a dense interior texel (st_isInterior).
-// - output 2 (FineExtinction): the extinction along light paths (st_attenuationAt),
-//   the mean over st_meanPoints^3 points spread evenly over the texel: the sweeps take
-//   the far half of each step toward the light from it (st_farExtinction,
-//   scatterer_transport_sweep_common.glsl). With st_meanPoints 0 (a texel of one voxel)
-//   the sweeps take no mean: none is computed, and output 2 has no target.
+// - output 2 (FineExtinction): the extinction along light paths (st_attenuationAt,
+//   sigma_t times OcclusionStrength), the mean over st_meanPoints^3 points spread evenly
+//   over the texel: the sweeps take the far half of each step toward the light from it
+//   (st_farExtinction, scatterer_transport_sweep_common.glsl). With st_meanPoints 0 (a
+//   texel of one voxel) the sweeps take no mean and output 2 has no target; the texel's
+//   medium is then that at its centre.
+// Outputs 0 and 2 take the same points. Output 0 took the texel's centre alone (as pass
+// 0b still takes each fine texel's, CoarseGrid::Subsamples) until 2026-12-07: a surface
+// that cut the texels gave those whose centre it missed no source, and along a surface
+// that climbs through the texel layers the diffusion's light rose and fell from layer to
+// layer (the bands across the CT head's crown, softer since, not gone: docs/model.md,
+// "Multiple scattering").
 //============================================================================
 //VTK::Transport::Common
 //VTK::Transport::Materials
@@ -93,13 +99,13 @@ void main()
   vec3 j = vec3(floor(texCoord * st_gridDims.xy), st_layer);
   vec3 t = st_gridToTexture(j);
   vec4 medium = vec4(0.0); // rgb sigma_s, a sigma_t
-  int points = st_subsamples * st_subsamples * st_subsamples;
-  for (int k = 0; k < points; ++k)
+  int n = max(st_meanPoints, 1);
+  for (int k = 0; k < n * n * n; ++k)
   {
-    vec4 m = st_mediumAt(st_gridToTexture(st_subsample(j, k)));
+    vec4 m = st_mediumAt(st_gridToTexture(st_texelPoint(j, k, n)));
     medium += vec4(m.rgb * m.a, m.a);
   }
-  medium /= float(points);
+  medium /= float(n * n * n);
   // The texel's mean light over the light entering it, (1 - exp(-2x)) / (2x): its
   // series below 1e-3 (no 0 / 0).
   float x = 0.5 * st_occlusionScale * medium.a * st_fineSize;
@@ -119,7 +125,8 @@ void main()
     }
     gather = float(m) + (mixed ? float(ST_MIXED) : 0.0);
   }
-  float own = st_meanAttenuation(j, st_meanPoints);
+  // Output 2 from the same points (st_meanAttenuation(j, st_meanPoints)).
+  float own = st_occlusionScale * medium.a;
   gl_FragData[0] = vec4(medium.rgb * meanOfEntering, 1.0);
   gl_FragData[1] = vec4(st_storedGather(gather, st_isInterior(j, own)));
   gl_FragData[2] = vec4(st_meanPoints > 0 ? own : 0.0);

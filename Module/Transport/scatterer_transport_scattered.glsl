@@ -10,10 +10,11 @@
 // own adding to it by blending.
 //============================================================================
 //VTK::Transport::Atlas
-// The coarse grid's atlas: rgb the fluence (unused when st_strength is 0), alpha the
-// ambient light's transmittance (pass 0b, copied in by pass 0d,
-// scatterer_transport_fluence_start.glsl): both in one read.
+// The coarse grid's atlas: rgb the fluence (unused when st_strength is 0), and the
+// ambient light's transmittance on the coarse grid (pass 0b,
+// scatterer_transport_coarsen.glsl).
 uniform sampler2D st_fluence;
+uniform sampler3D st_occlusion;
 uniform vec3 st_ambient;
 uniform vec3 st_coarseToGrid;
 uniform vec3 st_blockSize; // fine texels a coarse texel spans along each axis
@@ -25,7 +26,7 @@ vec3 st_scatteredAndAmbient(vec3 j)
   // Coarse texel c's centre is at fine position c * b + st_coarseToGrid + (b - 1) / 2.
   vec3 c = (j - st_coarseToGrid - 0.5 * (st_blockSize - 1.0)) / st_blockSize;
   vec3 coarse = (c + vec3(0.5)) / st_coarseDims;
-  vec4 fluence = st_atlasLinear(st_fluence, coarse);
-  vec3 scattered = st_strength > 0.0 ? st_strength * fluence.rgb : vec3(0.0);
-  return scattered + st_ambient * fluence.a;
+  vec3 scattered =
+    st_strength > 0.0 ? st_strength * st_atlasLinear(st_fluence, coarse).rgb : vec3(0.0);
+  return scattered + st_ambient * texture(st_occlusion, coarse).r;
 }

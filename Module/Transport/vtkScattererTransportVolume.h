@@ -286,9 +286,9 @@ public:
     std::vector<float> Medium;    ///< albedo, sigma_t
     std::vector<float> Occlusion; ///< one value a texel: the ambient light's transmittance
     std::vector<float> Source;    ///< the light scattered once
-    /// the fluence of the Jacobi iteration before the last (rgb; alpha the occlusion)
+    /// the fluence of the Jacobi iteration before the last (rgb; alpha the texel's sigma_t)
     std::vector<float> Before;
-    /// the fluence of the last iteration, as the gather read it (rgb; alpha the occlusion)
+    /// the fluence of the last iteration, as the gather read it (rgb; alpha its sigma_t)
     std::vector<float> Fluence;
   };
 

@@ -217,9 +217,12 @@ PictureStats RenderAutomatic(const std::string& path)
 
 /**
  * Structure: something shows, it is not dim, and it varies (not one flat colour).
- * Measured at 160x160: the automatic function gives MRI lit 25 %, mean 171, spread 39;
- * stent lit 12 %, mean 92, spread 53. The former ramp over the upper half of the
- * range gave MRI mean 79 and stent lit 1.4 %, mean 73: both fail here.
+ * Measured at 160x160: the automatic function gives MRI lit 24 %, mean 155, spread 47;
+ * stent lit 12 %, mean 84, spread 50 (2026-12-07; 166 and 87 before that day's changes
+ * to the multiple scattering, docs/model.md: the diffusion now carries less of dense
+ * matter's light into the thin matter around it). The former
+ * ramp over the upper half of the range gave MRI mean 79 and stent lit 1.4 %, mean 73:
+ * both fail here.
  */
 void ExpectStructure(const std::string& path)
 {
@@ -231,7 +234,7 @@ void ExpectStructure(const std::string& path)
   const PictureStats s = RenderAutomatic(path);
   EXPECT_GT(s.LitShare, 0.05) << path << ": hardly anything shows";
   EXPECT_LT(s.LitShare, 0.9) << path << ": the picture is filled";
-  EXPECT_GT(s.MeanLuminance, 85.0) << path << ": dim";
+  EXPECT_GT(s.MeanLuminance, 80.0) << path << ": dim";
   EXPECT_GT(s.LuminanceSpread, 25.0) << path << ": flat, no structure";
   std::printf("%s: lit %.1f %%, luminance mean %.0f, spread %.0f\n", path.c_str(),
     100.0 * s.LitShare, s.MeanLuminance, s.LuminanceSpread);
