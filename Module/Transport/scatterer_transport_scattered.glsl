@@ -26,7 +26,11 @@ vec3 st_scatteredAndAmbient(vec3 j)
   // Coarse texel c's centre is at fine position c * b + st_coarseToGrid + (b - 1) / 2.
   vec3 c = (j - st_coarseToGrid - 0.5 * (st_blockSize - 1.0)) / st_blockSize;
   vec3 coarse = (c + vec3(0.5)) / st_coarseDims;
+  // Each read only where its term counts (uniforms: the same branch for every texel; a
+  // vtkLight's ambient colour is black unless set).
   vec3 scattered =
     st_strength > 0.0 ? st_strength * st_atlasLinear(st_fluence, coarse).rgb : vec3(0.0);
-  return scattered + st_ambient * texture(st_occlusion, coarse).r;
+  bool lit = any(greaterThan(st_ambient, vec3(0.0)));
+  vec3 ambient = lit ? st_ambient * texture(st_occlusion, coarse).r : vec3(0.0);
+  return scattered + ambient;
 }
