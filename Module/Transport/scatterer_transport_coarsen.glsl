@@ -8,10 +8,23 @@
 // volume voxels, or 2 fine texels at TransportScale 3 and above; 1 on a frame built
 // coarser while the user drags, whose coarse texels stay a still frame's; fewer along an
 // axis of long voxels: scatterer::illumination::diffusionBlocksFor): its medium
-// (albedo, sigma_t) is the mean of theirs, each the mean over its points (st_mediumAt
-// at each st_subsample: the centre, or 2^3 points on a frame built coarser while the
-// user drags). Never one point sample of a block: see ScattererTransportGrid.cxx,
+// (albedo, sigma_t) is taken over its fine texels' points (st_mediumAt at each
+// st_subsample: the centre, or 2^3 points on a frame built coarser while the user
+// drags). Never one point sample of a block: see ScattererTransportGrid.cxx,
 // CoarseGrid::Over.
+// - sigma_t: the mean over all the points (a point without matter adds 0);
+// - albedo: the mean over the points that hold matter (sigma_t > 0). A point without
+//   matter scatters nothing, so its colour (what the transfer function gives a
+//   transparent scalar, air or a range of opacity 0, or 0 where clipping or cropping
+//   removed it) must not colour the light. Taken over all the points (until
+//   2026-12-07), a black colour at the CT head's transparent scalars (air and 0-150 HU,
+//   which no ray shows) darkened its lit picture by 7 % (85 levels at most), and a blue
+//   one tinted it (TransportVolume.ColourOfTransparentScalarsDoesNotReachTheLight).
+//   The points of matter count alike, not by their extinction: weighted by it (the
+//   mixture's albedo, sigma_s / sigma_t summed over the points), bone outweighs the skin
+//   over it in every coarse texel they share, the multiple scattering of the CT head's
+//   crown came out whiter than the Monte Carlo reference's and the defaults moved away
+//   from it (docs/accuracy.md, "Transparent colours").
 //
 // The second target holds the ambient occlusion of the block centre p: VTK's ambient
 // light comes from every direction, so it is occluded by the medium around p.
@@ -38,7 +51,8 @@ void main()
   vec3 c = vec3(floor(texCoord * st_coarseDims.xy), st_layer);
   vec3 b = vec3(block);
   vec3 fine = c * b + st_coarseToGrid;
-  vec4 medium = vec4(0.0);
+  vec4 medium = vec4(0.0); // rgb the albedos of the points of matter, a all sigma_t
+  float matter = 0.0;      // the points of matter
   int points = st_subsamples * st_subsamples * st_subsamples;
   for (int k = 0; k < block.x * block.y * block.z; ++k)
   {
@@ -46,10 +60,14 @@ void main()
     for (int p = 0; p < points; ++p)
     {
       // Outside the grid the medium is empty.
-      medium += st_mediumAt(st_gridToTexture(st_subsample(fine + o, p)));
+      vec4 m = st_mediumAt(st_gridToTexture(st_subsample(fine + o, p)));
+      float holds = m.a > 0.0 ? 1.0 : 0.0;
+      medium += vec4(m.rgb * holds, m.a);
+      matter += holds;
     }
   }
-  medium /= b.x * b.y * b.z * float(points);
+  medium.rgb /= max(matter, 1.0);
+  medium.a /= b.x * b.y * b.z * float(points);
   vec3 centre = fine + vec3(0.5 * (b - 1.0));
   float open = 0.0;
   for (int a = 0; a < 3; ++a)

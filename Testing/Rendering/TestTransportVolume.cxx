@@ -1495,6 +1495,46 @@ TEST(TransportVolume, GreyColourFunctionIsLitWithTheColoursTheRayCasterShows)
   EXPECT_GT(vsGreyAsRgb, 1e-2f) << "the albedo does not reach the light: the test sees nothing";
 }
 
+TEST(TransportVolume, ColourOfTransparentScalarsDoesNotReachTheLight)
+{
+  // A scalar of opacity 0 scatters nothing and no ray shows its colour, so the light must
+  // not depend on that colour either: a transfer function may give air black, white or
+  // anything. The slab's faces cut the diffusion's coarse texels (blocks of 4 voxels at
+  // TransportScale 1: z 4-7 and 16-19 hold 2 slab voxels and 2 empty ones), where the
+  // coarse albedo took the empty voxels' colour too until 2026-12-07
+  // (scatterer_transport_coarsen.glsl).
+  const int n = 24;
+  auto image = MakeVolume(n, 1.0, Slab(6, 17));
+  const auto lightWith = [&image](double empty, double matterRed)
+  {
+    TransportScene scene(image, 0.3);
+    vtkNew<vtkColorTransferFunction> colour;
+    colour->AddRGBPoint(0, empty, empty, empty); // opacity 0 up to 100 (TransportScene)
+    colour->AddRGBPoint(100, empty, empty, empty);
+    colour->AddRGBPoint(101, matterRed, 0.8, 0.7);
+    colour->AddRGBPoint(255, matterRed, 0.8, 0.7);
+    scene.Property->SetColor(colour);
+    scene.SetDirectional(0.3, 0.2, 1.0);
+    return scene.ReceivedLight();
+  };
+  const auto black = lightWith(0.0, 0.9), white = lightWith(1.0, 0.9),
+             lessRed = lightWith(0.0, 0.5);
+  ASSERT_FALSE(black.empty());
+  ASSERT_EQ(black.size(), white.size());
+  ASSERT_EQ(black.size(), lessRed.size());
+  float emptyColour = 0.0f, matterColour = 0.0f;
+  for (size_t i = 0; i < black.size(); ++i)
+  {
+    emptyColour = std::max(emptyColour, std::abs(black[i] - white[i]));
+    matterColour = std::max(matterColour, std::abs(black[i] - lessRed[i]));
+  }
+  std::printf("received light, empty voxels black vs white: %g; matter's red 0.9 vs 0.5: %g\n",
+    emptyColour, matterColour);
+  EXPECT_LT(emptyColour, 1e-5f) << "the colour of transparent scalars reaches the light";
+  EXPECT_GT(matterColour, 1e-2f)
+    << "the matter's albedo does not reach the light: the test sees nothing";
+}
+
 TEST(TransportVolume, LightsAddUpWhateverTheirOrder)
 {
   // Every term of the light is linear in each light's transmittance with weights that do
