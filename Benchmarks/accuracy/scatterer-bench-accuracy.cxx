@@ -325,7 +325,7 @@ void WritePlot(const std::vector<Row>& rows, const std::string& scene, const std
     if (r.Pareto)
       front.push_back(r);
   std::sort(front.begin(), front.end(), [](const Row& a, const Row& b) { return a.Ms < b.Ms; });
-  if (!front.empty())
+  if (front.size() >= 2) // a line of one point is no line (VTK reports an error drawing it)
   {
     vtkNew<vtkTable> ft;
     vtkNew<vtkDoubleArray> fx, fy;

@@ -7,8 +7,8 @@
     SCATTERER_DATA_DIR=DIR bash scripts/xvfb.sh build/bin/scatterer-bench-accuracy \\
       --size 256x256 --spp 1024 --frames 1 --scenes ct-head --configs transport_default \\
       --out DIR
-    PYTHONPATH=build/lib/python3.11/dist-packages /usr/bin/python3 \\
-      Benchmarks/accuracy/skull_phantom.py measure DIR DIR/ct-head-transport_default.png
+    /usr/bin/python3 Benchmarks/accuracy/skull_phantom.py measure DIR \\
+      DIR/ct-head-transport_default.png
 
 `write` puts DIR/ct-head.mhd (and .raw), which the CT head scene reads in place of the
 real head when SCATTERER_DATA_DIR is DIR: the CT head's grid (256 x 256 x 108 voxels of
@@ -57,28 +57,19 @@ def write(directory):
     print("wrote %s" % os.path.join(directory, "ct-head.mhd"))
 
 
-def read_reference(path):
+def read_rgb(path):
+    """RGB, rows top down: a float .vti (the reference's radiance) or a PNG (0-1)."""
     from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkIOImage import vtkPNGReader
     from vtkmodules.vtkIOXML import vtkXMLImageDataReader
-    reader = vtkXMLImageDataReader()
+    reader = vtkXMLImageDataReader() if path.endswith(".vti") else vtkPNGReader()
     reader.SetFileName(path)
     reader.Update()
     image = reader.GetOutput()
     dims = image.GetDimensions()
     rgb = vtk_to_numpy(image.GetPointData().GetArray(0)).reshape(dims[1], dims[0], -1)
-    return rgb[::-1, :, :3].astype(float)  # rows top down, as the PNGs
-
-
-def read_png(path):
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-    from vtkmodules.vtkIOImage import vtkPNGReader
-    reader = vtkPNGReader()
-    reader.SetFileName(path)
-    reader.Update()
-    image = reader.GetOutput()
-    dims = image.GetDimensions()
-    rgb = vtk_to_numpy(image.GetPointData().GetScalars()).reshape(dims[1], dims[0], -1)
-    return rgb[::-1, :, :3].astype(float) / 255.0
+    rgb = rgb[::-1, :, :3].astype(float)
+    return rgb if path.endswith(".vti") else rgb / 255.0
 
 
 def box_mean(values, mask, half):
@@ -101,7 +92,7 @@ def bands(rgb, mask):
 
 
 def measure(directory, pictures):
-    reference = read_reference(os.path.join(directory, "reference-ct-head-256x256-1024spp.vti"))
+    reference = read_rgb(os.path.join(directory, "reference-ct-head-256x256-1024spp.vti"))
     luminance = reference.mean(axis=2)
     dome = luminance > 0.15 * luminance.max()
     for _ in range(6):  # away from the rim, where the dome meets the black background
@@ -109,7 +100,7 @@ def measure(directory, pictures):
     print("picture,rmse_dome,bands_luminance_pct,bands_green_over_red_pct")
     print("reference (its noise),0,%.2f,%.2f" % tuple(bands(reference, dome)))
     for path in pictures:
-        rgb = read_png(path)
+        rgb = read_rgb(path)
         rgb *= (rgb * reference).sum() / max((rgb * rgb).sum(), 1e-12)  # the exposure fit
         rmse = np.sqrt(((rgb - reference)[dome] ** 2).mean())
         print("%s,%.5f,%.2f,%.2f" % ((path, rmse) + tuple(bands(rgb, dome))))
