@@ -26,7 +26,7 @@
 //   display's ceiling (the reference: 0.02 %), and the lit bone turned paler wherever
 //   light was added. At 0.8 the defaults of all five accuracy scenes came closer to the
 //   Monte Carlo reference in RMSE than at 0.9 and 1.0, the CT head's mean lit luminance
-//   is 0.97x stock Phong's (2026-12-07), and an unoccluded face toward a light (received
+//   is 0.93x stock Phong's (2026-12-07), and an unoccluded face toward a light (received
 //   light 1) shows 0.8 of its colour, thin or dense (docs/brightness.md,
 //   docs/accuracy.md).
 // - st_knee 0.85: measured closer to the reference than 0.7, which compressed more of the

@@ -130,7 +130,8 @@ CoarseGrid CoarseGrid::Over(const TransportGrid& grid, int downsample, int still
 {
   // A coarse texel spans diffusionVoxelsFor(s) volume voxels (of the shortest axis, along
   // an axis of long voxels: diffusionBlocksFor), s a still frame's transport scale. A coarse
-  // texel's medium is the mean of its fine texels' (pass 0b); one point sample of the transfer
+  // texel's medium is the mean of its fine texels' (pass 0b; its albedo over the block grown by
+  // half a block, scatterer_transport_coarsen.glsl); one point sample of the transfer
   // function standing for a whole block (transport scale 3 or more) let the diffusion pile the
   // bone's colour up into yellow-green blotches on the CT head, hence at least 2 fine texels a
   // block at a still frame's scale. A frame rendered while the user drags is built at a coarser

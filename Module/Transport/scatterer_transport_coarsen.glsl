@@ -8,13 +8,14 @@
 // volume voxels, or 2 fine texels at TransportScale 3 and above; 1 on a frame built
 // coarser while the user drags, whose coarse texels stay a still frame's; fewer along an
 // axis of long voxels: scatterer::illumination::diffusionBlocksFor): its medium
-// (albedo, sigma_t) is taken over its fine texels' points (st_mediumAt at each
-// st_subsample: the centre, or 2^3 points on a frame built coarser while the user
-// drags). Never one point sample of a block: see ScattererTransportGrid.cxx,
+// (albedo, sigma_t) is taken over its fine texels' points (st_mediumAt at
+// st_subsamples^3 points of each: the centre, or 2^3 points on a frame built coarser
+// while the user drags). Never one point sample of a block: see ScattererTransportGrid.cxx,
 // CoarseGrid::Over.
 // - sigma_t: the mean over all the points (a point without matter adds 0);
-// - albedo: the mean over the points that hold matter (sigma_t > 0). A point without
-//   matter scatters nothing, so its colour (what the transfer function gives a
+// - albedo: the mean over the points that hold matter (sigma_t > 0), over the block
+//   grown by half a block on each side, the grown part at half weight (below). A point
+//   without matter scatters nothing, so its colour (what the transfer function gives a
 //   transparent scalar, air or a range of opacity 0, or 0 where clipping or cropping
 //   removed it) must not colour the light. Taken over all the points (until
 //   2026-12-07), a black colour at the CT head's transparent scalars (air and 0-150 HU,
@@ -25,6 +26,19 @@
 //   over it in every coarse texel they share, the multiple scattering of the CT head's
 //   crown came out whiter than the Monte Carlo reference's and the defaults moved away
 //   from it (docs/accuracy.md, "Transparent colours").
+//   Why the grown block: the albedo decides how much of each colour the diffusion
+//   absorbs, so a coarse texel's albedo is the colour of its multiple scattering. Over
+//   the block alone it is a box sample of a field that changes within a block: where a
+//   surface between two materials (the CT head's scalp over its skull) climbs through
+//   the coarse layers, each texel holds another share of each, and the multiple
+//   scattering's colour stepped from layer to layer (pink and ivory rings on the
+//   crown). Overlapping the neighbours' blocks by half a block at half weight (a
+//   tent-like prefilter) smooths the steps; the extinction stays the block's own, so
+//   where light enters, is held and escapes does not move. It brought the CT head
+//   closer to the Monte Carlo reference in both measures and took the skull phantom's
+//   bands down; the margin at full weight, or a whole block wide, came out farther in
+//   SSIM (docs/accuracy.md, "The coarse albedo's neighbourhood";
+//   TransportVolume.MultipleScatteringColourFollowsTheMatterNotTheCoarseGrid).
 //
 // The second target holds the ambient occlusion of the block centre p: VTK's ambient
 // light comes from every direction, so it is occluded by the medium around p.
@@ -44,6 +58,12 @@ uniform vec3 st_coarseToGrid;      // coarse texel c covers fine positions c * s
 uniform vec3 st_blockSize;         // fine texels a coarse texel spans along each axis
 uniform vec3 st_h;                 // coarse texel size along each axis, world units
 uniform int st_aoSteps;
+// Points per fine texel and axis (CoarseGrid::Subsamples): 2 on a frame built coarser
+// while the user drags, else 1, the texel's centre.
+uniform int st_subsamples;
+
+// The weight of a point in the albedo's margin against one of the block's own (above).
+const float st_albedoMarginWeight = 0.5;
 
 void main()
 {
@@ -51,23 +71,29 @@ void main()
   vec3 c = vec3(floor(texCoord * st_coarseDims.xy), st_layer);
   vec3 b = vec3(block);
   vec3 fine = c * b + st_coarseToGrid;
-  vec4 medium = vec4(0.0); // rgb the albedos of the points of matter, a all sigma_t
-  float matter = 0.0;      // the points of matter
-  int points = st_subsamples * st_subsamples * st_subsamples;
-  for (int k = 0; k < block.x * block.y * block.z; ++k)
+  // The points lie on a lattice of st_subsamples per fine texel and axis, spread evenly
+  // as st_texelPoint spreads them: point q at fine + (q + 0.5) / st_subsamples - 0.5, the
+  // block's own for q in [0, own). The albedo's margin is half of that on each side (at
+  // least one point).
+  ivec3 own = block * st_subsamples;
+  ivec3 margin = (own + 1) / 2;
+  ivec3 wide = own + 2 * margin;
+  vec3 albedo = vec3(0.0); // the weighted albedos of the points of matter
+  float matter = 0.0;      // their weights
+  float extinction = 0.0;  // sigma_t summed over the block's own points
+  for (int k = 0; k < wide.x * wide.y * wide.z; ++k)
   {
-    vec3 o = vec3(float(k % block.x), float((k / block.x) % block.y), float(k / (block.x * block.y)));
-    for (int p = 0; p < points; ++p)
-    {
-      // Outside the grid the medium is empty.
-      vec4 m = st_mediumAt(st_gridToTexture(st_subsample(fine + o, p)));
-      float holds = m.a > 0.0 ? 1.0 : 0.0;
-      medium += vec4(m.rgb * holds, m.a);
-      matter += holds;
-    }
+    ivec3 q = ivec3(k % wide.x, (k / wide.x) % wide.y, k / (wide.x * wide.y)) - margin;
+    // Outside the grid the medium is empty.
+    vec4 m = st_mediumAt(
+      st_gridToTexture(fine + (vec3(q) + 0.5) / float(st_subsamples) - vec3(0.5)));
+    bool inBlock = all(greaterThanEqual(q, ivec3(0))) && all(lessThan(q, own));
+    float weight = m.a > 0.0 ? (inBlock ? 1.0 : st_albedoMarginWeight) : 0.0;
+    albedo += weight * m.rgb;
+    matter += weight;
+    extinction += inBlock ? m.a : 0.0;
   }
-  medium.rgb /= max(matter, 1.0);
-  medium.a /= b.x * b.y * b.z * float(points);
+  vec4 medium = vec4(albedo / max(matter, 1.0e-6), extinction / float(own.x * own.y * own.z));
   vec3 centre = fine + vec3(0.5 * (b - 1.0));
   float open = 0.0;
   for (int a = 0; a < 3; ++a)

@@ -278,17 +278,6 @@ vec3 st_texelPoint(vec3 j, int k, int n)
   return j + (s + vec3(0.5)) / float(n) - vec3(0.5);
 }
 
-// The coarse medium's pass (0b) takes each fine texel's medium as the mean over
-// st_subsamples^3 points spread evenly over the texel (CoarseGrid::Subsamples: 2 on a
-// frame built coarser while the user drags, else 1, the texel's centre): point k of
-// texel j. Pass 0a takes its texel's over the points of its mean extinction
-// (scatterer_transport_medium.glsl).
-uniform int st_subsamples;
-vec3 st_subsample(vec3 j, int k)
-{
-  return st_texelPoint(j, k, st_subsamples);
-}
-
 // Where the material table is read for the matter at texture position t (inside the
 // grid and kept): (normalised scalar, row); row < 0: no matter, no material.
 vec2 st_materialCoordAt(vec3 t)

@@ -1535,6 +1535,66 @@ TEST(TransportVolume, ColourOfTransparentScalarsDoesNotReachTheLight)
     << "the matter's albedo does not reach the light: the test sees nothing";
 }
 
+TEST(TransportVolume, MultipleScatteringColourFollowsTheMatterNotTheCoarseGrid)
+{
+  // Skin (4 voxels) over bone (10), the pair the CT head's crown shows, tilted so that
+  // both climb through the diffusion's coarse layers (blocks of 4 voxels at
+  // TransportScale 1), one voxel every 6 along x. The matter is the same all along the
+  // tilt, so the colour its multiple scattering gives the lit skin should be too. A
+  // coarse texel's albedo taken over its own block alone (until 2026-12-07) took another
+  // share of skin and bone in each texel the surface climbs through, and the colour
+  // stepped with it: the rings on the CT head's crown (scatterer_transport_coarsen.glsl,
+  // which overlaps the neighbours' blocks). Its green / red measured 0.225-0.315 along
+  // the tilt then, 0.253-0.320 now: the steps left are where the surface enters another
+  // coarse layer and the fluence is read between other texels.
+  const int n = 48;
+  const auto top = [](int i) { return 30 - i / 6; };
+  auto image = MakeVolume(n, 1.0,
+    [top](int i, int, int k) -> unsigned char
+    { return k > top(i) ? 0 : (k > top(i) - 4 ? 150 : (k > top(i) - 14 ? 250 : 0)); });
+  TransportScene scene(image, 0.9);
+  vtkNew<vtkPiecewiseFunction> opacity; // skin 0.3, bone 0.9 per unit
+  opacity->AddPoint(0, 0.0);
+  opacity->AddPoint(100, 0.0);
+  opacity->AddPoint(101, 0.3);
+  opacity->AddPoint(200, 0.3);
+  opacity->AddPoint(201, 0.9);
+  opacity->AddPoint(255, 0.9);
+  scene.Property->SetScalarOpacity(opacity);
+  vtkNew<vtkColorTransferFunction> colour;
+  colour->AddRGBPoint(0, 0.0, 0.0, 0.0);
+  colour->AddRGBPoint(101, 0.9, 0.45, 0.35); // skin
+  colour->AddRGBPoint(200, 0.9, 0.45, 0.35);
+  colour->AddRGBPoint(201, 0.95, 0.92, 0.8); // bone
+  colour->AddRGBPoint(255, 0.95, 0.92, 0.8);
+  scene.Property->SetColor(colour);
+  scene.SetDirectional(0.0, 0.2, 1.0);
+  const auto light = scene.ReceivedLight();
+  scene.Mapper->SetMultipleScattering(0.0);
+  const auto once = scene.ReceivedLight();
+  ASSERT_EQ(light.size(), static_cast<size_t>(3 * n * n * n));
+  ASSERT_EQ(once.size(), light.size());
+  std::vector<double> hue; // the multiple scattering's green / red at the lit skin, by x
+  for (int i = 6; i < n - 6; ++i)
+  {
+    double red = 0.0, green = 0.0;
+    for (int j = 12; j < n - 12; ++j)
+    {
+      const size_t at = 3 * (static_cast<size_t>(i) + n * (j + static_cast<size_t>(n) * top(i)));
+      red += light[at] - once[at];
+      green += light[at + 1] - once[at + 1];
+    }
+    ASSERT_GT(red, 0.0) << "no multiple scattering at the lit skin: nothing is compared";
+    hue.push_back(green / red);
+  }
+  const auto [lo, hi] = std::minmax_element(hue.begin(), hue.end());
+  const double mean = std::accumulate(hue.begin(), hue.end(), 0.0) / hue.size();
+  std::printf("the multiple scattering's green / red along the tilt: %.3f to %.3f, "
+              "spread %.1f %% of its mean\n",
+    *lo, *hi, 100.0 * (*hi - *lo) / mean);
+  EXPECT_LT((*hi - *lo) / mean, 0.28) << "the colour of the light follows the coarse grid";
+}
+
 TEST(TransportVolume, LightsAddUpWhateverTheirOrder)
 {
   // Every term of the light is linear in each light's transmittance with weights that do
