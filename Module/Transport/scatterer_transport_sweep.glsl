@@ -93,13 +93,46 @@ void main()
   // path that converges on the light took on about a texel's optical depth too much.
   // There the light is marched to through the grid. Taken as 1 (until 2026-12-07), the
   // light's own slices were lit through any matter.
+  // A marched texel takes the light where a swept one does, at the end of its step's
+  // near half: the step one slice toward the light along the path, its near half at most
+  // 2 texels sideways (the sweep's cap, 4 texels a step), the rest of the step from the
+  // texels' means on the slice toward the light (st_farMeanExtinction), and T(q) marched
+  // from the step's end q. So a marched texel beside a swept one takes the light as it
+  // does. Taken at the texel's nearest face with the volume's own points (until
+  // 2026-12-07, night), a texel whose path ran flat through a dense surface (the top
+  // texels of a plate a few voxels under the light, beyond 4 texels sideways a slice)
+  // crossed up to two texels of its matter that a swept texel beside it takes as the
+  // texels' mean at q: a ring of dark scallops around the lit disc where the two met
+  // (docs/hard-cases.md).
   vec3 toLightGrid = st_worldToGrid * toLight;
   vec3 toLightSweep = st_toSweep * toLightGrid;
-  if (st_hasPrevious == 0 || abs(toLightSweep.z) < 3.0 ||
-    length(toLightSweep.xy) > 4.0 * abs(toLightSweep.z))
+  float slices = abs(toLightSweep.z);
+  float sideways = length(toLightSweep.xy);
+  if (st_hasPrevious == 0 || slices < 3.0 || sideways > 4.0 * slices)
   {
-    Tentering = exp(-st_depthToLight(j, toLightGrid));
-    T = Tentering * exp(-st_nearDepthToLight(j, toLightGrid));
+    // The share of the way to the light in the near half: half a step, at most 2 texels
+    // sideways (1 where the light lies in the near half).
+    float nearShare = min(0.5 / max(max(slices, sideways / 4.0), 1.0e-6), 1.0);
+    // Where the march starts (fraction `from` of the way from there) and the optical
+    // depth of the step's far part beyond the near part. One march and one sample of the
+    // near part (st_nearDepthToLight): llvmpipe runs this branch's reads, masked, for
+    // every fragment of the draw, swept ones included (docs/rendering.md).
+    vec3 start = j;
+    vec3 startToLight = toLightGrid;
+    float from = nearShare;
+    float tauFar = 0.0;
+    if (slices >= 1.0)
+    {
+      vec3 pathStep = toLightGrid / slices;
+      float near = nearShare * slices; // of the step
+      start = j + pathStep;
+      startToLight = toLightGrid - pathStep;
+      from = 0.0;
+      tauFar = (1.0 - near) * length(st_gridToWorld * pathStep) *
+        st_farMeanExtinction(j, pathStep, near);
+    }
+    Tentering = exp(-st_depthToLight(start, startToLight, from) - tauFar);
+    T = Tentering * exp(-st_nearDepthToLight(j, toLightGrid, nearShare));
   }
   else
   {

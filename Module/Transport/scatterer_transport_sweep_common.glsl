@@ -146,6 +146,30 @@ float st_farFactor(vec3 q, vec3 stepGrid, float len)
   return exp(-0.5 * len * st_farExtinction(q, stepGrid));
 }
 
+// The mean extinction over the far part of a positional light's step from grid position
+// j, pathStep (one slice toward the light, along the path), beyond the fraction `near` of
+// it: the texels' means of the slice toward the light (st_farExtinction), one a texel
+// of the part's sideways course, the last at the step's end q. A swept texel's far half
+// takes the mean at q alone (a step at most 4 texels sideways, its far half 2); a marched
+// one's runs farther where its path is flat, and a mean at q alone left out what stands
+// between (TransportVolume.PointLightOverAPlateLeavesAWallsShadowOnItAlongFlatPaths).
+// Kept on that slice: between slices the texels' means put a surface's matter into the
+// empty texels above it (TransportVolume.APointLightJustAboveASurfaceLightsIt).
+float st_farMeanExtinction(vec3 j, vec3 pathStep, float near)
+{
+  vec3 stepSweep = st_toSweep * pathStep;
+  float slice = (st_toSweep * (j + pathStep)).z;
+  int n = clamp(int(ceil((1.0 - near) * length(stepSweep.xy) - 1.0e-3)), 1, 4096);
+  float sum = 0.0;
+  for (int i = 1; i <= n; ++i)
+  {
+    vec3 p = st_toSweep * (j + pathStep * (near + (1.0 - near) * float(i) / float(n)));
+    p.z = slice;
+    sum += st_farExtinction(transpose(st_toSweep) * p, pathStep);
+  }
+  return sum / float(n);
+}
+
 // The extinction at grid position g for a path marched through the grid: the volume itself
 // at that point, as the ray caster samples it; 0 outside the grid (no matter there). Not
 // the texels' means (until 2026-12-07): interpolated between texels, they put a dense
@@ -161,22 +185,17 @@ float st_extinctionAtGrid(vec3 g)
   return st_attenuationAt(st_gridToTexture(g));
 }
 
-// The optical depth from texel j's face toward a positional light to the light, toLight
-// the grid vector from j to it: marched straight, st_stepSamples samples a texel (one a
-// volume voxel),
+// The optical depth from grid position j to a positional light along the way from
+// fraction `from` of toLight (the grid vector from j to the light) on: marched straight,
+// st_stepSamples samples a texel (one a volume voxel),
 //   tau = len / n * sum_i sigma(j + (f + (i + 1/2) (e - f) / n) toLight)
-// f = 1/2 / max|toLight| (the face), e the fraction of the way at which the path leaves
-// the grid (1 if the light is inside: beyond the grid there is no matter), n =
-// ceil((e - f) max|toLight| st_stepSamples), len the world length of toLight.
+// f = from, e the fraction of the way at which the path leaves the grid (1 if the light
+// is inside: beyond the grid there is no matter), n = ceil((e - f) max|toLight|
+// st_stepSamples) (at least 1), len the world length of toLight.
 // For texels whose path to the light no slice before holds (scatterer_transport_sweep.glsl).
-float st_depthToLight(vec3 j, vec3 toLight)
+float st_depthToLight(vec3 j, vec3 toLight, float from)
 {
   float reach = max(max(abs(toLight.x), abs(toLight.y)), abs(toLight.z));
-  if (reach <= 0.5)
-  {
-    return 0.0;
-  }
-  float from = 0.5 / reach;
   float end = 1.0;
   for (int a = 0; a < 3; ++a)
   {
@@ -190,7 +209,7 @@ float st_depthToLight(vec3 j, vec3 toLight)
   {
     return 0.0;
   }
-  int n = min(int(ceil((end - from) * reach * float(st_stepSamples))), 4096);
+  int n = clamp(int(ceil((end - from) * reach * float(st_stepSamples))), 1, 4096);
   float segment = (end - from) / float(n);
   float tau = 0.0;
   for (int i = 0; i < n; ++i)
@@ -200,12 +219,9 @@ float st_depthToLight(vec3 j, vec3 toLight)
   return tau * length(st_gridToWorld * toLight) * segment;
 }
 
-// The rest of that path, from texel j's centre to its face (or to the light, if nearer):
-// one sample halfway.
-float st_nearDepthToLight(vec3 j, vec3 toLight)
+// The first fraction `to` of that way, from texel j's centre: one sample halfway.
+float st_nearDepthToLight(vec3 j, vec3 toLight, float to)
 {
-  float reach = max(max(abs(toLight.x), abs(toLight.y)), abs(toLight.z));
-  float to = min(0.5 / max(reach, 1.0e-6), 1.0);
   return st_extinctionAtGrid(j + toLight * (0.5 * to)) * length(st_gridToWorld * toLight) * to;
 }
 
