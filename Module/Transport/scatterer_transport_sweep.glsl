@@ -107,12 +107,12 @@ void main()
   vec3 toLightGrid = st_worldToGrid * toLight;
   vec3 toLightSweep = st_toSweep * toLightGrid;
   float slices = abs(toLightSweep.z);
-  float sideways = length(toLightSweep.xy);
-  if (st_hasPrevious == 0 || slices < 3.0 || sideways > 4.0 * slices)
+  float steps = st_stepsAlong(toLightSweep); // more than slices: capped sideways
+  if (st_hasPrevious == 0 || slices < 3.0 || steps > slices)
   {
     // The share of the way to the light in the near half: half a step, at most 2 texels
     // sideways (1 where the light lies in the near half).
-    float nearShare = min(0.5 / max(max(slices, sideways / 4.0), 1.0e-6), 1.0);
+    float nearShare = min(0.5 / max(steps, 1.0e-6), 1.0);
     // Where the march starts (fraction `from` of the way from there) and the optical
     // depth of the step's far part beyond the near part. One march and one sample of the
     // near part (st_nearDepthToLight): llvmpipe runs this branch's reads, masked, for

@@ -40,10 +40,17 @@ uniform float st_stepLength;
 // slice's plane would shift sideways without bound: at most 4 texels per step. A
 // positional light's sweep takes it per texel (its direction changes from texel to
 // texel); StepTowardLight mirrors it for a directional light.
+// How many steps the way ds (sweep texels) takes: one a slice, or one per 4 texels
+// sideways where the way runs flatter (the cap).
+float st_stepsAlong(vec3 ds)
+{
+  return max(abs(ds.z), length(ds.xy) / 4.0);
+}
+
 void st_stepTowardLight(vec3 toward, out vec3 stepSweep, out vec3 stepGrid, out float len)
 {
   vec3 ds = st_toSweep * (st_worldToGrid * toward);
-  float along = max(abs(ds.z), length(ds.xy) / 4.0);
+  float along = st_stepsAlong(ds);
   stepSweep = ds / max(along, 1.0e-20);
   stepSweep.z = sign(ds.z);
   stepGrid = transpose(st_toSweep) * stepSweep;
