@@ -72,10 +72,13 @@ struct FramePlan
   double SampleDistance = 1.0; ///< the ray caster's step, world units
   double Radius = 1.0;         ///< template radius, world units
   float ToTex[3][3] = {}; ///< per-sample mode: texture offset of one radius along world x, y, z
-  std::string Declarations, ShadingInit, Shading; ///< this frame's GLSL
+  std::string Declarations, ShadingInit, Shading, ShadingExit; ///< this frame's GLSL
 
   /** Identifies this frame's shader text (ScattererChangeKey.h). */
-  std::string ShaderKey() const { return this->Declarations + this->ShadingInit + this->Shading; }
+  std::string ShaderKey() const
+  {
+    return this->Declarations + this->ShadingInit + this->Shading + this->ShadingExit;
+  }
 };
 
 /** What the mapper renders, as the planner reads it (the mapper's public state). */
@@ -117,6 +120,7 @@ struct PlanRequests
   std::string ExtraGLSL; ///< for tests: appended to the declarations
   /// for tests: at most this many samples per light read (1: every sample reads it)
   int MaximumLightStride = scatterer::illumination::kMaximumLightReadStride;
+  bool SurfaceDetail = true; ///< for tests: false leaves out the light inside a dense texel
   const KeySet* FailedShaders = nullptr;
 };
 

@@ -31,13 +31,15 @@ void UniformInstaller::Install(vtkVolume* vol, const FramePlan& plan,
     this->Textures.push_back(textures.Templates);
   }
   scatterer_shader::InstallIllumination(
-    vol, plan.Declarations, plan.ShadingInit, plan.Shading, this->Samplers);
+    vol, plan.Declarations, plan.ShadingInit, plan.Shading, plan.ShadingExit, this->Samplers);
 
   u.TemplatesPerMaterial = parameters.TemplatesPerMaterial;
   u.PhotonCount = std::min(parameters.PhotonCap, textures.PackedWidth);
   u.PhotonThreshold = static_cast<float>(parameters.PhotonThreshold);
-  // The per-sample photon test measures distances in template radii.
-  u.OcclusionScale = OcclusionScale(parameters.OcclusionStrength, plan.Radius);
+  // The per-sample photon test measures distances in template radii; the transport mode's
+  // ray, marching toward the light inside a dense texel (st_surfaceChange), in world units.
+  u.OcclusionScale =
+    OcclusionScale(parameters.OcclusionStrength, plan.Features.Transport ? 1.0 : plan.Radius);
   u.LongRange = static_cast<float>(parameters.LongRangeMultiple);
   u.Interval = parameters.IlluminationInterval;
   int extent[6];

@@ -65,6 +65,7 @@ struct vtkScattererTemplateVolumeMapper::vtkInternals
   std::vector<scatterer_scene::RequestedMaterial> Requested;
   std::string ExtraGLSL;
   int MaximumLightStride = scatterer::illumination::kMaximumLightReadStride;
+  bool SurfaceDetail = true;
   scatterer_render::WarnOnce Warn;
 
   scatterer_render::FramePlanner Planner;
@@ -359,6 +360,11 @@ void vtkScattererTemplateVolumeMapper::SetMaximumLightReadStrideForTesting(int s
   this->Internals->MaximumLightStride = std::max(1, stride);
 }
 
+void vtkScattererTemplateVolumeMapper::SetSurfaceDetailForTesting(bool surfaceDetail)
+{
+  this->Internals->SurfaceDetail = surfaceDetail;
+}
+
 void vtkScattererTemplateVolumeMapper::SetGatherAtCentroidForTesting(bool atCentroid)
 {
   this->Internals->Transport.SetGatherAtCentroid(atCentroid);
@@ -614,6 +620,7 @@ std::string vtkScattererTemplateVolumeMapper::PlanFrame(vtkRenderer* ren, vtkVol
   requests.Materials = &in.Requested;
   requests.ExtraGLSL = in.ExtraGLSL;
   requests.MaximumLightStride = in.MaximumLightStride;
+  requests.SurfaceDetail = in.SurfaceDetail;
   requests.FailedShaders = &in.FailedShaders;
   const std::string stock = in.Planner.Plan(ren, vol, source, parameters, requests, in.Warn, plan);
   if (plan.MaterialsBuilt)

@@ -484,6 +484,13 @@ public:
   void SetMaximumLightReadStrideForTesting(int stride);
 
   /**
+   * For tests: false leaves out the light inside a dense texel (on by default where the
+   * scene allows it: scatterer_illumination_dec.glsl, st_surfaceChange), as a
+   * vtkMultiVolume has none.
+   */
+  void SetSurfaceDetailForTesting(bool surfaceDetail);
+
+  /**
    * For tests: false gathers every material's in-scattering kernel photon by photon,
    * also where it spreads little enough to be read at its centroid alone (the default,
    * scatterer::readsAtCentroid).

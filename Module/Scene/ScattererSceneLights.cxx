@@ -123,4 +123,22 @@ LightSet CollectLights(vtkRenderer* renderer, vtkVolumeProperty* property)
   }
   return set;
 }
+
+BrightestLight FindBrightestLight(const LightSet& lights)
+{
+  BrightestLight brightest;
+  float best = -1.0f, total = 0.0f;
+  for (int l = 0; l < lights.Count(); ++l)
+  {
+    const float sum = lights.Color[3 * l] + lights.Color[3 * l + 1] + lights.Color[3 * l + 2];
+    total += sum;
+    if (sum > best)
+    {
+      best = sum;
+      brightest.Index = l;
+    }
+  }
+  brightest.Share = total > 0.0f ? best / total : 0.0f;
+  return brightest;
+}
 }

@@ -37,6 +37,16 @@ struct LightSet
 
 constexpr int kMaxLights = 6;
 
+/** The brightest light (the largest colour sum; the first of equals) and its share of all
+ * the lights' colour, 0 < Share <= 1; index 0 and share 0 for no light. The light inside
+ * a dense texel follows it alone (scatterer_illumination_dec.glsl, st_surfaceChange). */
+struct BrightestLight
+{
+  int Index = 0;
+  float Share = 0.0f;
+};
+BrightestLight FindBrightestLight(const LightSet& lights);
+
 /**
  * Collects the switched-on lights of @p renderer (call during rendering). A light whose
  * intensity, colours, position, focal point, attenuation, cone angle or exponent (or the

@@ -4,6 +4,7 @@
 #include "ScattererSceneMaterials.h"
 
 #include "scatterer_illumination_dec.h"
+#include "scatterer_shading_exit.h"
 #include "scatterer_shading_impl.h"
 #include "scatterer_shading_init.h"
 #include "scatterer_shading_part.h"
@@ -31,7 +32,7 @@ bool Features::operator==(const Features& o) const
     this->Positional == o.Positional && this->Blend2 == o.Blend2 && this->Phong == o.Phong &&
     this->Transport == o.Transport && this->LabelMask == o.LabelMask &&
     this->Components == o.Components && this->Parts == o.Parts &&
-    this->LightStride == o.LightStride;
+    this->LightStride == o.LightStride && this->SurfaceDetail == o.SurfaceDetail;
 }
 
 std::string Features::Describe() const
@@ -43,7 +44,7 @@ std::string Features::Describe() const
     { this->Bleed, "bleed" }, { this->Boundary, "boundary" }, { this->Positional, "positional" },
     { this->Blend2, "blend2" }, { this->Phong, "phong" }, { this->LabelMask, "labelmask" },
     { this->Components == Scalars::Independent, "independent" },
-    { this->Components == Scalars::Dependent, "dependent" } };
+    { this->Components == Scalars::Dependent, "dependent" }, { this->SurfaceDetail, "surface" } };
   for (const auto& n : names)
   {
     if (n.first)
@@ -135,7 +136,8 @@ std::map<std::string, bool> Flags(const Features& f)
     { "FETCH", f.Shadow || f.Bleed || (f.Boundary && f.Materials > 1) },
     { "TRANSPORT", f.Transport }, { "GROUPED", Grouped(f) }, { "PERSAMPLE", !f.Transport },
     { "LABELMASK", f.LabelMask }, { "INDEPENDENT", f.Components == Features::Scalars::Independent },
-    { "DEPENDENT", f.Components == Features::Scalars::Dependent }, { "MULTI", f.Parts > 0 } };
+    { "DEPENDENT", f.Components == Features::Scalars::Dependent }, { "MULTI", f.Parts > 0 },
+    { "SURFACE", f.SurfaceDetail } };
 }
 
 // Limits, not the scene's counts, except the light slots (scatterer_illumination_dec.glsl).
@@ -172,6 +174,11 @@ std::string IlluminationDeclarations(const Features& features)
 std::string ShadingInitialization(const Features& features)
 {
   return Preprocess(scatterer_shading_init, Flags(features), Values(features));
+}
+
+std::string ShadingExit(const Features& features)
+{
+  return Preprocess(scatterer_shading_exit, Flags(features), Values(features));
 }
 
 std::string ShadingImplementation(const Features& features)

@@ -45,6 +45,10 @@ struct SCATTERERTEMPLATE_EXPORT Features
   /// 4; scatterer::illumination::lightReadStride). Above 1 the composite step is written
   /// out that many times per pass of VTK's ray loop.
   int LightStride = 1;
+  /// Transport, one volume, without gradient shading: the ray's first dense samples take
+  /// the light inside their texel along the brightest light, after the ray loop
+  /// (scatterer_illumination_dec.glsl, st_surfaceChange).
+  bool SurfaceDetail = false;
 
   bool operator==(const Features& o) const;
   bool operator!=(const Features& o) const { return !(*this == o); }
@@ -79,6 +83,10 @@ SCATTERERTEMPLATE_EXPORT std::string ShadingInitialization(const Features& featu
 /** The per-sample composite code that replaces `//VTK::Shading::Impl` (a vtkMultiVolume:
  * one block per input, in VTK's order). */
 SCATTERERTEMPLATE_EXPORT std::string ShadingImplementation(const Features& features);
+
+/** After the ray loop, inserted at `//VTK::Shading::Exit` (VTK's text kept; empty when
+ * no feature needs it). */
+SCATTERERTEMPLATE_EXPORT std::string ShadingExit(const Features& features);
 }
 
 #endif

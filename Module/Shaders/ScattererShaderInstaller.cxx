@@ -22,6 +22,7 @@ namespace
 const char* const kDecTag = "//VTK::ComputeRayDirection::Dec";
 const char* const kImplTag = "//VTK::Shading::Impl";
 const char* const kInitTag = "//VTK::Shading::Init";
+const char* const kExitTag = "//VTK::Shading::Exit";
 // vtkUniforms has no sampler type: samplers are declared as int and retyped
 // after VTK's own replacements have inserted the declaration.
 const char* const kSamplerPrefix = "uniform int st_";
@@ -90,7 +91,8 @@ std::vector<std::string> SamplerReplacements(vtkOpenGLShaderProperty* sp)
 }
 
 void InstallIllumination(vtkVolume* volume, const std::string& declarations,
-  const std::string& shadingInit, const std::string& shading, const std::vector<Sampler>& samplers)
+  const std::string& shadingInit, const std::string& shading, const std::string& shadingExit,
+  const std::vector<Sampler>& samplers)
 {
   vtkOpenGLShaderProperty* sp = Property(volume);
   if (!sp)
@@ -102,6 +104,18 @@ void InstallIllumination(vtkVolume* volume, const std::string& declarations,
   Ensure(sp, kDecTag, true, std::string(kDecTag) + "\n" + declarations);
   Ensure(sp, kInitTag, true, shadingInit);
   Ensure(sp, kImplTag, true, shading);
+  // After the ray loop: VTK's own exit code first (kept by its tag), then ours.
+  if (shadingExit.empty())
+  {
+    if (Find(sp, kExitTag, true))
+    {
+      sp->ClearFragmentShaderReplacement(kExitTag, true);
+    }
+  }
+  else
+  {
+    Ensure(sp, kExitTag, true, std::string(kExitTag) + "\n" + shadingExit);
+  }
   std::vector<std::string> wanted;
   for (const auto& sampler : samplers)
   {
@@ -171,6 +185,9 @@ void SetIlluminationUniforms(
   Set3(u, name("st_lightColor"), padded(lights.Color, 3 * ml).data(), ml);
   u->SetUniform1iv(name("st_lightPositional"), ml, padded(lights.Positional, ml).data());
   u->SetUniform3f(name("st_ambient"), lights.Ambient);
+  const scatterer_scene::BrightestLight brightest = scatterer_scene::FindBrightestLight(lights);
+  u->SetUniformi(name("st_surfaceLight"), brightest.Index);
+  u->SetUniformf(name("st_surfaceShare"), brightest.Share);
   // Brightness of an unoccluded white sample, to normalize the visibility
   // that darkens VTK's own (Phong) shading.
   float unlit = (lights.Ambient[0] + lights.Ambient[1] + lights.Ambient[2]) / 3.0f;
@@ -228,6 +245,10 @@ void RemoveIllumination(vtkVolume* volume)
   {
     sp->ClearFragmentShaderReplacement(kInitTag, true);
   }
+  if (Find(sp, kExitTag, true))
+  {
+    sp->ClearFragmentShaderReplacement(kExitTag, true);
+  }
   for (const auto& sampler : SamplerReplacements(sp))
   {
     sp->ClearFragmentShaderReplacement(sampler, false);
@@ -250,6 +271,7 @@ int CountIlluminationLeftovers(vtkVolume* volume)
   count += Find(sp, kDecTag, true) ? 1 : 0;
   count += Find(sp, kImplTag, true) ? 1 : 0;
   count += Find(sp, kInitTag, true) ? 1 : 0;
+  count += Find(sp, kExitTag, true) ? 1 : 0;
   count += static_cast<int>(SamplerReplacements(sp).size());
   count += static_cast<int>(IlluminationUniformNames(sp->GetFragmentCustomUniforms()).size());
   return count;

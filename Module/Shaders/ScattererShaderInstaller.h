@@ -56,7 +56,8 @@ struct Sampler
  * retypes the @p samplers' int uniforms (vtkUniforms has no sampler type).
  */
 void InstallIllumination(vtkVolume* volume, const std::string& declarations,
-  const std::string& shadingInit, const std::string& shading, const std::vector<Sampler>& samplers);
+  const std::string& shadingInit, const std::string& shading, const std::string& shadingExit,
+  const std::vector<Sampler>& samplers);
 
 /**
  * Sets every st_* value uniform (values only, so no shader rebuild unless sizes

@@ -26,8 +26,9 @@
 //   display's ceiling (the reference: 0.02 %), and the lit bone turned paler wherever
 //   light was added. At 0.8 the defaults of all five accuracy scenes came closer to the
 //   Monte Carlo reference in RMSE than at 0.9 and 1.0, the CT head's mean lit luminance
-//   is 0.93x stock Phong's (2026-12-07), and an unoccluded face toward a light (received
-//   light 1) shows 0.8 of its colour, thin or dense (docs/brightness.md,
+//   is 0.92x stock Phong's (2026-12-07), and an unoccluded face toward a light (received
+//   light 1) shows 0.8 of its colour, thin or dense (a dense one's single scattering's
+//   share less, as it falls inside the face: st_surfaceChange) (docs/brightness.md,
 //   docs/accuracy.md).
 // - st_knee 0.85: measured closer to the reference than 0.7, which compressed more of the
 //   lit range.
@@ -73,6 +74,135 @@ vec3 st_shownLight(vec3 received)
   return st_compressHighlights(received);
 //ST::ENDIF
 }
+//ST::IF SURFACE
+
+// The light inside a dense texel, along the brightest light (docs/model.md, "The light
+// inside a dense texel"). A transport texel holds the light entering it, at its face
+// toward the light; in dense matter (bone: several mean free paths a texel) the light
+// falls by far more than that inside it. Single scattering in a semi-infinite medium lit
+// at cosine mu_l and seen at mu_v reflects, per unit of light (Chandrasekhar 1960,
+// Radiative Transfer, ch. 3; isotropic scattering),
+//   omega/4 mu_l / (mu_l + mu_v),
+// which a ray's samples composite only if each takes its own attenuation toward the light,
+// exp(-tau_l); with the texel's light they all take 1, whatever the light's angle.
+// So the ray's first ST_SURFACE_SAMPLES dense samples (optical depth above 1 across a
+// transport texel) take, after the ray loop, the light one texel toward the light times
+// the attenuation of the volume's own points on the way (ST_SURFACE_POINTS of them),
+//   L_local = L(q + h l) exp(-tau(q, q + h l)),
+// q the centre of weight of the sample's ray step; and only the single scattering's share
+// of the light takes it, per colour channel (the rest, multiply scattered, does not come
+// from the light's direction):
+//   L' = (1 - beta) L + beta L_local,   beta = A_1 / A  (times the brightest light's share),
+//   A_1 = omega/2 (1 - ln 2)               single scattering's plane albedo, mu_0 = 1
+//   A   = (1 - g) / (1 + 2 g), g = sqrt(1 - omega)   all orders (Hapke 1981's H function)
+// omega the sample's colour: beta = 0.15 for white bone, 0.33 at 0.9, 1 as omega -> 0.
+// After the loop, not in it: the composite is linear in the light, so a sample's change is
+// its weight times its colour's change; and llvmpipe runs the body of an if in the loop
+// for every sample (masked): the same reads in the loop made still frames 2.3x slower. The
+// loop keeps two numbers a sample (where on the ray, what of the ray is left there); the
+// rest is read again after it. Two samples of two points each: the first two samples carry
+// most of a dense face's weight (bone at the CT head's 0.5 mm steps: 0.55 and 0.25); a
+// third came closer to the reference on the CT head by 2 % (RMSE 0.01237 against 0.01262),
+// but two already take the still frame to about the 1.2x stock composite it may cost on
+// llvmpipe (docs/rendering.md).
+const int ST_SURFACE_SAMPLES = 2;
+const int ST_SURFACE_POINTS = 2;
+vec4 st_surfaceAt;     // the samples' places: ray steps from st_rayStart
+vec4 st_surfaceLeft;   // what of the ray was left at each: 1 - its alpha before the sample
+int st_surfaceCount;
+vec3 st_rayStart;      // the ray's first position (g_dataPos)
+float st_perStep;      // 1 / |g_dirStep|^2: a position's steps from the start
+float st_surfaceAlpha; // a sample's opacity above which its optical depth across a texel is 1
+mat3 st_dataToWorld;   // ray position -> world, directions only
+mat3 st_worldToData;
+
+// The step toward the brightest light from ray position p: one transport texel long (xyz,
+// ray coordinates) and its world length (w).
+vec4 st_surfaceStep(vec3 p)
+{
+  vec3 toLight = st_lightDir[st_surfaceLight];
+//ST::IF POSITIONAL
+  if (st_lightPositional[st_surfaceLight] != 0)
+  {
+    vec4 world = in_volumeMatrix[0] * in_textureDatasetMatrix[0] * inverse(in_cellToPoint[0]) *
+      vec4(p, 1.0);
+    toLight = normalize(st_lightPos[st_surfaceLight] - world.xyz / world.w);
+  }
+//ST::ENDIF
+  vec3 step = st_worldToData * toLight;
+  vec3 texels = mat3(st_toTransport) * step * vec3(textureSize(st_transport, 0));
+  step /= max(length(texels), 1.0e-12);
+  return vec4(step, length(st_dataToWorld * step));
+}
+
+// The scalar the ray's transfer functions take at ray position p, as the composite step
+// reads it.
+vec4 st_scalarAt(vec3 p)
+{
+//ST::IF DEPENDENT
+  return texture3D(in_volume[0], p) * in_volume_scale[0] + in_volume_bias[0];
+//ST::ELSE
+  return vec4(texture3D(in_volume[0], p).r * in_volume_scale[0].r + in_volume_bias[0].r);
+//ST::ENDIF
+}
+
+// The opacity (one ray step's) of the volume at ray position p; none outside it.
+float st_opacityAt(vec3 p)
+{
+  if (any(lessThan(p, in_texMin[0])) || any(greaterThan(p, in_texMax[0])))
+  {
+    return 0.0;
+  }
+  return computeOpacity(st_scalarAt(p));
+}
+
+// The optical depth toward the light over `step` from ray position p: ST_SURFACE_POINTS
+// points, each -ln(1 - alpha) (length / d_s), alpha being one ray step's opacity, times
+// OcclusionStrength (st_occlusionScale: world units here), as the transport volume's.
+float st_depthToward(vec3 p, vec4 step)
+{
+  float kept = 1.0;
+  for (int i = 0; i < ST_SURFACE_POINTS; ++i)
+  {
+    kept *= 1.0 - st_opacityAt(p + ((float(i) + 0.5) / float(ST_SURFACE_POINTS)) * step.xyz);
+  }
+  return -log(max(kept, 1.0e-30)) * st_occlusionScale * step.w /
+    (float(ST_SURFACE_POINTS) * in_sampleDistance);
+}
+
+// What sample k changes in the composite: its weight times its colour lit by L' less its
+// colour lit by the light it took (read here again, without the group's interpolation).
+vec3 st_surfaceChange(int k)
+{
+  vec3 p = st_rayStart + st_surfaceAt[k] * g_dirStep;
+  vec4 scalar = st_scalarAt(p);
+  float alpha = computeOpacity(scalar);
+  vec3 colour = computeColor(scalar, alpha).rgb;
+  vec3 received = st_transportRead(p);
+  vec3 lit = st_shownLight(received);
+  // A sample's opacity is that of the ray's step before it, optical depth tau_s: the light
+  // it shows is the step's, weighted as the step composites it, sigma exp(-tau_s u) over
+  // u in [0, 1]. The attenuation is taken at that weight's centre,
+  //   u_c = 1 / tau_s - exp(-tau_s) / (1 - exp(-tau_s))   (1/2 for a thin step),
+  // not at the sample: at the step's end, a step of 2.3 mean free paths showed a face lit
+  // straight on at 0.78 of its level (TransportVolume.UnoccludedFaceShowsAtStockPhongs...).
+  float tauS = -log(max(1.0 - alpha, 1.0e-30));
+  float centre = tauS < 1.0e-3 ? 0.5 - tauS / 12.0 : 1.0 / tauS - exp(-tauS) / (1.0 - exp(-tauS));
+  vec3 q = p - (1.0 - centre) * g_dirStep;
+  vec4 step = st_surfaceStep(q);
+  float attenuation = exp(-st_depthToward(q, step));
+  vec3 local = attenuation * st_transportRead(q + step.xyz);
+  vec3 omega = clamp(colour, 0.0, 1.0);
+  vec3 g = sqrt(1.0 - omega);
+  vec3 beta = clamp(0.1534 * omega * (1.0 + 2.0 * g) / max(1.0 - g, 1.0e-4), 0.0, 1.0);
+  // Mixed before the display's compression, which is monotone: less light arriving never
+  // shows brighter (compressed first, the mix of a shadowed texel's light showed brighter
+  // than the unshadowed one's: HardCases.OpacityOne).
+  vec3 shown = st_shownLight(mix(received, local, beta * st_surfaceShare));
+  return st_surfaceLeft[k] * alpha *
+    (clamp(colour * shown, 0.0, 1.0) - clamp(colour * lit, 0.0, 1.0));
+}
+//ST::ENDIF
 //ST::IF GROUPED
 
 // Samples that share a light read: the light at the far end of the group, read by

@@ -143,6 +143,18 @@
           // VTK's gradient shading stays; the template visibility darkens it.
           g_srcColor.rgb = clamp((g_srcColor.rgb * st_F + st_B) * st_unlitNorm, 0.0, 1.0);
 //ST::ELSE
+//ST::IF SURFACE
+          // The ray's first dense samples: their light is taken again after the ray loop
+          // (st_surfaceChange); kept here, where on the ray and what of it was left, in
+          // the count's slot. Without branch or indexed store: llvmpipe runs both for
+          // every sample.
+          bool st_kept = g_srcColor.a > st_surfaceAlpha && st_surfaceCount < ST_SURFACE_SAMPLES;
+          vec4 st_slot = vec4(equal(ivec4(0, 1, 2, 3), ivec4(st_kept ? st_surfaceCount : -1)));
+          st_surfaceAt = mix(st_surfaceAt,
+            vec4(dot(g_dataPos - st_rayStart, g_dirStep) * st_perStep), st_slot);
+          st_surfaceLeft = mix(st_surfaceLeft, vec4(1.0 - g_fragColor.a), st_slot);
+          st_surfaceCount += st_kept ? 1 : 0;
+//ST::ENDIF
           g_srcColor.rgb = clamp(g_srcColor.rgb * st_F + st_B, 0.0, 1.0);
 //ST::ENDIF
 //ST::ENDIF

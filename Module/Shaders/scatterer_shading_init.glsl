@@ -23,6 +23,20 @@
 //ST::IF GROUPED
   st_lightEnd = st_shownLight(st_transportRead(g_dataPos));
 //ST::ENDIF
+//ST::IF SURFACE
+  // The light inside a dense texel (st_surfaceChange): none recorded yet; a sample is
+  // dense when its optical depth across a transport texel toward the light, h / d_s times
+  // its own, is above 1: alpha > 1 - exp(-d_s / h). Once per ray.
+  st_surfaceCount = 0;
+  st_surfaceAt = vec4(0.0);
+  st_surfaceLeft = vec4(0.0);
+  st_rayStart = g_dataPos;
+  st_perStep = 1.0 / max(dot(g_dirStep, g_dirStep), 1.0e-30);
+  st_dataToWorld =
+    mat3(in_volumeMatrix[0] * in_textureDatasetMatrix[0] * inverse(in_cellToPoint[0]));
+  st_worldToData = inverse(st_dataToWorld);
+  st_surfaceAlpha = 1.0 - exp(-in_sampleDistance / max(st_surfaceStep(g_dataPos).w, 1.0e-12));
+//ST::ENDIF
 //ST::ENDIF
 //ST::IF PERSAMPLE
   int st_cachedMaterial = -2;

@@ -14,7 +14,8 @@ namespace
 std::string All(const Features& f)
 {
   return scatterer_shader::IlluminationDeclarations(f) +
-    scatterer_shader::ShadingInitialization(f) + scatterer_shader::ShadingImplementation(f);
+    scatterer_shader::ShadingInitialization(f) + scatterer_shader::ShadingImplementation(f) +
+    scatterer_shader::ShadingExit(f);
 }
 
 bool Has(const std::string& text, const std::string& token)
@@ -224,4 +225,29 @@ TEST(ShaderComposer, SamplesThatShareALightReadCarryTheRayLoopsOwnStep)
     EXPECT_FALSE(Has(text, "st_lightEnd")) << variant;
     EXPECT_FALSE(Has(g.Describe(), "light-stride")) << variant;
   }
+}
+
+TEST(ShaderComposer, TheLightInsideADenseTexelRunsAfterTheRayLoopOnly)
+{
+  // The ray's first dense samples are kept in the loop and lit again after it
+  // (scatterer_shading_exit.glsl); without the feature neither part is in the text, and
+  // the loop keeps its samples without a branch or an indexed store (llvmpipe runs both
+  // for every sample).
+  Features f;
+  f.LightStride = 4;
+  EXPECT_EQ(scatterer_shader::ShadingExit(f), "");
+  EXPECT_FALSE(Has(scatterer_shader::ShadingImplementation(f), "st_surface"));
+  EXPECT_FALSE(Has(f.Describe(), "surface"));
+  f.SurfaceDetail = true;
+  const std::string exit = scatterer_shader::ShadingExit(f);
+  EXPECT_TRUE(Has(exit, "g_fragColor.rgb += st_surfaceChange(st_k);"));
+  EXPECT_FALSE(Has(exit, "//ST::"));
+  const std::string impl = scatterer_shader::ShadingImplementation(f);
+  EXPECT_FALSE(Has(impl, "st_surfaceAt[st_surfaceCount]"));
+  EXPECT_TRUE(Has(impl, "st_surfaceAt = mix(st_surfaceAt"));
+  EXPECT_TRUE(Has(scatterer_shader::IlluminationDeclarations(f), "vec3 st_surfaceChange(int k)"));
+  EXPECT_TRUE(Has(scatterer_shader::ShadingInitialization(f), "st_surfaceCount = 0;"));
+  EXPECT_EQ(f.Describe(),
+    "transport lights=1 materials=1 shadow thin bleed boundary surface "
+    "light-stride=4");
 }
