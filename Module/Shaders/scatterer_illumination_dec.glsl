@@ -113,8 +113,8 @@ int st_surfaceCount;
 vec3 st_rayStart;      // the ray's first position (g_dataPos)
 float st_perStep;      // 1 / |g_dirStep|^2: a position's steps from the start
 float st_surfaceAlpha; // a sample's opacity above which its optical depth across a texel is 1
-mat3 st_dataToWorld;   // ray position -> world, directions only
-mat3 st_worldToData;
+mat4 st_rayToWorld;    // ray position (g_dataPos) -> world
+mat3 st_worldToData;   // world -> ray position, directions only
 
 // The step toward the brightest light from ray position p: one transport texel long (xyz,
 // ray coordinates) and its world length (w).
@@ -124,15 +124,14 @@ vec4 st_surfaceStep(vec3 p)
 //ST::IF POSITIONAL
   if (st_lightPositional[st_surfaceLight] != 0)
   {
-    vec4 world = in_volumeMatrix[0] * in_textureDatasetMatrix[0] * inverse(in_cellToPoint[0]) *
-      vec4(p, 1.0);
+    vec4 world = st_rayToWorld * vec4(p, 1.0);
     toLight = normalize(st_lightPos[st_surfaceLight] - world.xyz / world.w);
   }
 //ST::ENDIF
   vec3 step = st_worldToData * toLight;
   vec3 texels = mat3(st_toTransport) * step * vec3(textureSize(st_transport, 0));
   step /= max(length(texels), 1.0e-12);
-  return vec4(step, length(st_dataToWorld * step));
+  return vec4(step, length(mat3(st_rayToWorld) * step));
 }
 
 // The scalar the ray's transfer functions take at ray position p, as the composite step

@@ -32,9 +32,8 @@
   st_surfaceLeft = vec4(0.0);
   st_rayStart = g_dataPos;
   st_perStep = 1.0 / max(dot(g_dirStep, g_dirStep), 1.0e-30);
-  st_dataToWorld =
-    mat3(in_volumeMatrix[0] * in_textureDatasetMatrix[0] * inverse(in_cellToPoint[0]));
-  st_worldToData = inverse(st_dataToWorld);
+  st_rayToWorld = in_volumeMatrix[0] * in_textureDatasetMatrix[0] * inverse(in_cellToPoint[0]);
+  st_worldToData = inverse(mat3(st_rayToWorld));
   st_surfaceAlpha = 1.0 - exp(-in_sampleDistance / max(st_surfaceStep(g_dataPos).w, 1.0e-12));
 //ST::ENDIF
 //ST::ENDIF
