@@ -74,6 +74,25 @@ vec3 st_shownLight(vec3 received)
   return st_compressHighlights(received);
 //ST::ENDIF
 }
+//ST::IF GROUPED
+
+// Samples that share a light read: the light at the far end of the group, read by
+// its first sample (at the ray's start by the shading init). Below st_lightFloor the
+// geometric interpolation takes the light as that floor (no division by zero).
+vec3 st_lightEnd;
+const vec3 st_lightFloor = vec3(1.0e-4);
+
+// The factor from one sample's light to the next's in a group: the ratio r of the
+// group's two reads to the power 1/n, n = @LIGHT_STRIDE@. For the strides
+// lightReadStride picks (2 and 4) by square roots, exactly: pow(r, 1/n) is
+// exp2(log2(r) / n), which llvmpipe evaluates by polynomials in every lane
+// (docs/rendering.md, "Fewer light reads"). The condition is a constant.
+vec3 st_strideRoot(vec3 r)
+{
+  const int n = @LIGHT_STRIDE@;
+  return n == 4 ? sqrt(sqrt(r)) : (n == 2 ? sqrt(r) : pow(r, vec3(1.0 / float(n))));
+}
+//ST::ENDIF
 //ST::IF SURFACE
 
 // The light inside a dense texel, along the brightest light (docs/model.md, "The light
@@ -86,15 +105,19 @@ vec3 st_shownLight(vec3 received)
 // which a ray's samples composite only if each takes its own attenuation toward the light,
 // exp(-tau_l); with the texel's light they all take 1, whatever the light's angle.
 // So the ray's first ST_SURFACE_SAMPLES dense samples (optical depth above 1 across a
-// transport texel) take, after the ray loop, the light one texel toward the light times
-// the attenuation of the volume's own points on the way (ST_SURFACE_POINTS of them),
-//   L_local = L(q + h l) exp(-tau(q, q + h l)),
-// q the centre of weight of the sample's ray step; and only the single scattering's share
-// of the light takes it, per colour channel (the rest, multiply scattered, does not come
-// from the light's direction):
+// transport texel) take, after the ray loop, the light ST_SURFACE_TEXELS texels toward the
+// light times their own attenuation toward it, averaged over the matter they show
+// (st_surfaceChange),
+//   L_local = L_ahead f;
+// and only the single scattering's share of the light takes it, per colour channel (the
+// rest, multiply scattered, does not come from the light's direction):
 //   L' = (1 - beta) L + beta L_local,   beta = A_1 / A  (times the brightest light's share),
 //   A_1 = omega/2 (1 - ln 2)               single scattering's plane albedo, mu_0 = 1
 //   A   = (1 - g) / (1 + 2 g), g = sqrt(1 - omega)   all orders (Hapke 1981's H function)
+// Two texels, not one: the read's trilinear stencil then lies past the surface's own
+// texel, which an oblique light's sweep darkens; one texel away, a face lit at 60 degrees
+// read 0.73 of the light a face lit straight on read, two texels away 0.97
+// (TransportVolume.DenseFaceDarkensWithTheLightsAngle's slab).
 // omega the sample's colour: beta = 0.15 for white bone, 0.33 at 0.9, 1 as omega -> 0.
 // After the loop, not in it: the composite is linear in the light, so a sample's change is
 // its weight times its colour's change; and llvmpipe runs the body of an if in the loop
@@ -107,9 +130,18 @@ vec3 st_shownLight(vec3 received)
 // llvmpipe (docs/rendering.md).
 const int ST_SURFACE_SAMPLES = 2;
 const int ST_SURFACE_POINTS = 2;
+const float ST_SURFACE_TEXELS = 2.0; // the march's length, in transport texels
+const int ST_EDGE_HALVINGS = 4;
 vec4 st_surfaceAt;     // the samples' places: ray steps from st_rayStart
 vec4 st_surfaceLeft;   // what of the ray was left at each: 1 - its alpha before the sample
 int st_surfaceCount;
+// Of the surface whose matter the kept samples show (st_surfaceChange):
+vec3 st_surfaceEntry;  // where its matter begins
+float st_surfaceFirst; // the length of it the first sample shows, in ray steps
+float st_surfaceDepth; // the ray's optical depth in it before the second sample (tau_s)
+float st_surfaceTau;   // the light's optical depth where it begins (a)
+float st_surfaceRise;  // the light's optical depth's rise per unit of the ray's (c)
+vec3 st_surfaceAhead;  // the texels' light ST_SURFACE_TEXELS texels toward the light
 vec3 st_rayStart;      // the ray's first position (g_dataPos)
 float st_perStep;      // 1 / |g_dirStep|^2: a position's steps from the start
 float st_surfaceAlpha; // a sample's opacity above which its optical depth across a texel is 1
@@ -169,28 +201,113 @@ float st_depthToward(vec3 p, vec4 step)
     (float(ST_SURFACE_POINTS) * in_sampleDistance);
 }
 
+// Where the opacity crosses `edge` between ray positions `outside` (below it, opacity
+// outsideAlpha) and `inside` (above it): ST_EDGE_HALVINGS halvings and a linear
+// interpolation of the opacity in the last interval (continuous, where the last halving's
+// midpoint jumped from pixel to pixel). An `outside` above the edge too gives `outside`.
+vec3 st_edgeBetween(vec3 outside, float outsideAlpha, vec3 inside, float insideAlpha, float edge)
+{
+  for (int i = 0; i < ST_EDGE_HALVINGS; ++i)
+  {
+    vec3 middle = 0.5 * (outside + inside);
+    float middleAlpha = st_opacityAt(middle);
+    bool dense = middleAlpha >= edge;
+    inside = dense ? middle : inside;
+    insideAlpha = dense ? middleAlpha : insideAlpha;
+    outside = dense ? outside : middle;
+    outsideAlpha = dense ? outsideAlpha : middleAlpha;
+  }
+  float t = clamp((edge - outsideAlpha) / max(insideAlpha - outsideAlpha, 1.0e-6), 0.0, 1.0);
+  return mix(outside, inside, t);
+}
+
+// The light the ray loop gave the sample at ray step i, position p (its st_F, shown). With
+// grouped reads, the geometric interpolation between its group's two reads, as
+// scatterer_shading_impl.glsl takes it; read at p instead, a sample in a group that
+// crossed a surface was taken away with other light than the loop gave it, and a smooth
+// surface showed dots where the groups' phase met the surface's (surface_probe.py).
+vec3 st_loopLight(float i, vec3 p)
+{
+//ST::IF GROUPED
+  const float n = float(@LIGHT_STRIDE@);
+  float index = floor(i + 0.5);
+  float k = mod(index, n);
+  vec3 start = max(
+    st_shownLight(st_transportRead(st_rayStart + (index - k) * g_dirStep)), st_lightFloor);
+  vec3 end = max(
+    st_shownLight(st_transportRead(st_rayStart + (index - k + n) * g_dirStep)), st_lightFloor);
+  return start * pow(st_strideRoot(end / start), vec3(k));
+//ST::ELSE
+  return st_shownLight(st_transportRead(p));
+//ST::ENDIF
+}
+
 // What sample k changes in the composite: its weight times its colour lit by L' less its
-// colour lit by the light it took (read here again, without the group's interpolation).
+// colour lit by the light the loop gave it (st_loopLight).
 vec3 st_surfaceChange(int k)
 {
   vec3 p = st_rayStart + st_surfaceAt[k] * g_dirStep;
   vec4 scalar = st_scalarAt(p);
   float alpha = computeOpacity(scalar);
   vec3 colour = computeColor(scalar, alpha).rgb;
-  vec3 received = st_transportRead(p);
-  vec3 lit = st_shownLight(received);
-  // A sample's opacity is that of the ray's step before it, optical depth tau_s: the light
-  // it shows is the step's, weighted as the step composites it, sigma exp(-tau_s u) over
-  // u in [0, 1]. The attenuation is taken at that weight's centre,
-  //   u_c = 1 / tau_s - exp(-tau_s) / (1 - exp(-tau_s))   (1/2 for a thin step),
-  // not at the sample: at the step's end, a step of 2.3 mean free paths showed a face lit
-  // straight on at 0.78 of its level (TransportVolume.UnoccludedFaceShowsAtStockPhongs...).
-  float tauS = -log(max(1.0 - alpha, 1.0e-30));
+  vec3 lit = st_loopLight(st_surfaceAt[k], p);
+  // A sample's opacity is that of a ray step, optical depth tau_s. The composite gives a
+  // surface's first sample that whole opacity whatever part of its step the matter fills:
+  // it shows the first tau_s of the ray's optical depth s beyond where the matter begins
+  // (the edge where the opacity reaches half the sample's), weighted as the step
+  // composites it, exp(-s); the sample after it, the next tau_s. Its single scattering's
+  // light is that weight's mean of the light's attenuation, exp(-(a + c s)): a the light's
+  // optical depth where the matter begins (ST_SURFACE_POINTS points on the way to
+  // L_ahead), c its rise per unit of s (mu_v / mu_l in a uniform half-space):
+  //   f = exp(-a - c s_0) (1 - exp(-(1 + c) tau_s)) / ((1 + c)(1 - exp(-tau_s))),
+  // s_0 = 0 for the first sample, its tau_s for the next. Both depths hold whatever the
+  // ray's phase: taken within the sample's own step, the light followed that phase, in
+  // rings across a smooth surface (surface_probe.py's torus, docs/hard-cases.md). Taken at
+  // the weight's centre, exp(-tau_l(s_c)) (e^-x is convex), a face lit at 60 degrees
+  // showed less of its light lit straight on than its texels' light alone. The multiply
+  // scattered share takes the texels' light at the weight's centre,
+  //   u_c = 1 / tau_s - exp(-tau_s) / (1 - exp(-tau_s))   of the slab (1/2 for a thin one).
+  bool follows = k > 0; // the exit calls it for a second sample that follows the first
+  float tauS = max(-log(max(1.0 - alpha, 1.0e-30)), 1.0e-4);
   float centre = tauS < 1.0e-3 ? 0.5 - tauS / 12.0 : 1.0 / tauS - exp(-tauS) / (1.0 - exp(-tauS));
-  vec3 q = p - (1.0 - centre) * g_dirStep;
-  vec4 step = st_surfaceStep(q);
-  float attenuation = exp(-st_depthToward(q, step));
-  vec3 local = attenuation * st_transportRead(q + step.xyz);
+  float depth = follows ? st_surfaceDepth : 0.0;
+  if (!follows)
+  {
+    // Where the matter begins: where the opacity reaches half the sample's, between the
+    // step's two ends.
+    vec3 before = p - g_dirStep;
+    st_surfaceEntry = st_edgeBetween(before, st_opacityAt(before), p, alpha, 0.5 * alpha);
+    // Matter denser beyond the sample (it lay in an edge's rise) takes the sample's opacity
+    // within a shorter length, tau_s / tau steps, tau that matter's optical depth a step:
+    // taken a step long, a sample in a sharp edge took the light from inside the opaque
+    // matter behind it, a dark dot.
+    float tau = -log(max(1.0 - st_opacityAt(st_surfaceEntry + centre * g_dirStep), 1.0e-30));
+    st_surfaceFirst = min(1.0, tauS / max(tau, 1.0e-30));
+    vec3 weightCentre = st_surfaceEntry + st_surfaceFirst * centre * g_dirStep;
+    vec4 toLight = st_surfaceStep(weightCentre);
+    vec4 march = ST_SURFACE_TEXELS * toLight;
+    st_surfaceAhead = st_transportRead(weightCentre + march.xyz);
+    st_surfaceTau = st_depthToward(st_surfaceEntry, march);
+    // c: from a mean free path in along the ray (half a step to a step), the length toward
+    // the light to where the matter ends (the same edge, within a texel), over the length
+    // in: in a uniform half-space mu_v / mu_l. Marched at the march's points instead, half
+    // a voxel and more apart, c came out 0.4 for a face lit straight on (1); from less than
+    // half a step in, the halvings' error over the tiny length in darkened opaque faces.
+    float depthIn = clamp(st_surfaceFirst / tauS, 0.5, 1.0); // ray steps
+    vec3 deeper = st_surfaceEntry + depthIn * g_dirStep;
+    vec3 beyond = deeper + toLight.xyz;
+    vec3 matterEnd = st_edgeBetween(beyond, st_opacityAt(beyond), deeper, alpha, 0.5 * alpha);
+    st_surfaceRise = st_occlusionScale * (length(matterEnd - deeper) / length(toLight.xyz)) *
+      toLight.w / (depthIn * in_sampleDistance);
+    st_surfaceDepth = tauS;
+  }
+  vec3 q = st_surfaceEntry +
+    (follows ? st_surfaceFirst + centre : st_surfaceFirst * centre) * g_dirStep;
+  vec3 received = st_transportRead(q);
+  float c = st_surfaceRise;
+  float attenuation = exp(-st_surfaceTau - c * depth) * (1.0 - exp(-(1.0 + c) * tauS)) /
+    ((1.0 + c) * max(1.0 - exp(-tauS), 1.0e-30));
+  vec3 local = attenuation * st_surfaceAhead;
   vec3 omega = clamp(colour, 0.0, 1.0);
   vec3 g = sqrt(1.0 - omega);
   vec3 beta = clamp(0.1534 * omega * (1.0 + 2.0 * g) / max(1.0 - g, 1.0e-4), 0.0, 1.0);
@@ -200,25 +317,6 @@ vec3 st_surfaceChange(int k)
   vec3 shown = st_shownLight(mix(received, local, beta * st_surfaceShare));
   return st_surfaceLeft[k] * alpha *
     (clamp(colour * shown, 0.0, 1.0) - clamp(colour * lit, 0.0, 1.0));
-}
-//ST::ENDIF
-//ST::IF GROUPED
-
-// Samples that share a light read: the light at the far end of the group, read by
-// its first sample (at the ray's start by the shading init). Below st_lightFloor the
-// geometric interpolation takes the light as that floor (no division by zero).
-vec3 st_lightEnd;
-const vec3 st_lightFloor = vec3(1.0e-4);
-
-// The factor from one sample's light to the next's in a group: the ratio r of the
-// group's two reads to the power 1/n, n = @LIGHT_STRIDE@. For the strides
-// lightReadStride picks (2 and 4) by square roots, exactly: pow(r, 1/n) is
-// exp2(log2(r) / n), which llvmpipe evaluates by polynomials in every lane
-// (docs/rendering.md, "Fewer light reads"). The condition is a constant.
-vec3 st_strideRoot(vec3 r)
-{
-  const int n = @LIGHT_STRIDE@;
-  return n == 4 ? sqrt(sqrt(r)) : (n == 2 ? sqrt(r) : pow(r, vec3(1.0 / float(n))));
 }
 //ST::ENDIF
 //ST::ENDIF

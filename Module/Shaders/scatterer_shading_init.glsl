@@ -30,6 +30,8 @@
   st_surfaceCount = 0;
   st_surfaceAt = vec4(0.0);
   st_surfaceLeft = vec4(0.0);
+  st_surfaceEntry = g_dataPos;
+  st_surfaceFirst = 1.0;
   st_rayStart = g_dataPos;
   st_perStep = 1.0 / max(dot(g_dirStep, g_dirStep), 1.0e-30);
   st_rayToWorld = in_volumeMatrix[0] * in_textureDatasetMatrix[0] * inverse(in_cellToPoint[0]);

@@ -240,7 +240,7 @@ TEST(ShaderComposer, TheLightInsideADenseTexelRunsAfterTheRayLoopOnly)
   EXPECT_FALSE(Has(f.Describe(), "surface"));
   f.SurfaceDetail = true;
   const std::string exit = scatterer_shader::ShadingExit(f);
-  EXPECT_TRUE(Has(exit, "g_fragColor.rgb += st_surfaceChange(st_k);"));
+  EXPECT_TRUE(Has(exit, "g_fragColor.rgb += st_surfaceChange(0);"));
   EXPECT_FALSE(Has(exit, "//ST::"));
   const std::string impl = scatterer_shader::ShadingImplementation(f);
   EXPECT_FALSE(Has(impl, "st_surfaceAt[st_surfaceCount]"));
