@@ -290,9 +290,10 @@ vec3 st_surfaceChange(int k)
     st_surfaceTau = st_depthToward(st_surfaceEntry, march);
     // c: from a mean free path in along the ray (half a step to a step), the length toward
     // the light to where the matter ends (the same edge, within a texel), over the length
-    // in: in a uniform half-space mu_v / mu_l. Marched at the march's points instead, half
-    // a voxel and more apart, c came out 0.4 for a face lit straight on (1); from less than
-    // half a step in, the halvings' error over the tiny length in darkened opaque faces.
+    // in: in a uniform half-space mu_v / mu_l. From the march's points instead, a voxel
+    // apart, c came out about 0.4 for a face lit straight on (1), half a voxel apart 0.72;
+    // from less than half a step in, the halvings' error over the tiny length darkened
+    // opaque faces.
     float depthIn = clamp(st_surfaceFirst / tauS, 0.5, 1.0); // ray steps
     vec3 deeper = st_surfaceEntry + depthIn * g_dirStep;
     vec3 beyond = deeper + toLight.xyz;
