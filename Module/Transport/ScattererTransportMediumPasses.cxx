@@ -157,6 +157,10 @@ bool BuildMediumTextures(const TransportPass& pass, std::string& why)
   {
     return false;
   }
+  if (!pass.Programs.CreateMedium(pass.Window, why))
+  {
+    return false;
+  }
   pass.Window->GetState()->vtkglDisable(GL_BLEND);
   DrawFineMedium(pass);
   pass.Textures.LayerGathers = CountLayerGathers(pass);

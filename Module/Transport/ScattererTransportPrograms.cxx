@@ -83,6 +83,28 @@ vtkOpenGLQuadHelper* NewLayeredQuad(vtkOpenGLRenderWindow* window, const std::st
     window, scatterer_transport_layers_vs, fs.c_str(), scatterer_transport_layers_gs);
 }
 
+// Releases @p quad; VTK's shader cache keeps its program, compiled, until the window goes.
+void Release(vtkWindow* window, std::unique_ptr<vtkOpenGLQuadHelper>& quad)
+{
+  if (quad)
+  {
+    quad->ReleaseGraphicsResources(window);
+    quad.reset();
+  }
+}
+
+// Releases @p quad and its program's OpenGL objects, which the release of a quad alone
+// leaves to VTK's shader cache until the window goes; the cache compiles the program again
+// when a quad asks for it next.
+void ReleaseWithProgram(vtkWindow* window, std::unique_ptr<vtkOpenGLQuadHelper>& quad)
+{
+  if (quad && quad->Program)
+  {
+    quad->Program->ReleaseGraphicsResources(window);
+  }
+  Release(window, quad);
+}
+
 // @p quad, made by @p make the first time; null with @p why set if it does not compile.
 template <typename Make>
 vtkOpenGLQuadHelper* CompiledWhenFirstUsed(
@@ -127,45 +149,62 @@ bool TransportPrograms::Create(
 {
   this->ReleaseGraphicsResources(window);
   this->CreatedVariant = variant;
-  // Every pass but the sweep draws whole 3D textures, all their layers in one draw.
-  auto quad = [&](const std::string& fs)
-  { return std::unique_ptr<vtkOpenGLQuadHelper>(NewLayeredQuad(window, fs)); };
-  this->Medium = quad(WithCommon(scatterer_transport_medium, variant));
-  this->Coarsen = quad(WithCommon(scatterer_transport_coarsen, variant));
-  this->Count = quad(WithCommon(scatterer_transport_count, variant));
-  // A 2D target: VTK's full-screen quad.
-  const std::string fluenceStart = WithCommon(scatterer_transport_fluence_start, "");
-  this->FluenceStart = std::unique_ptr<vtkOpenGLQuadHelper>(
-    new vtkOpenGLQuadHelper(window, nullptr, fluenceStart.c_str(), ""));
   // The diffusion's passes draw the coarse texels that hold a medium
   // (ScattererTransportTiles.h) into the coarse grid's atlas: 2D targets, no layers.
   const std::string tilesVertex = WithCommon(scatterer_transport_tiles_vs, "");
-  auto tiles = [&](const std::string& fs)
+  this->Source = std::unique_ptr<vtkOpenGLQuadHelper>(new vtkOpenGLQuadHelper(
+    window, tilesVertex.c_str(), WithCommon(scatterer_transport_source, variant).c_str(), ""));
+  this->Diffuse = std::unique_ptr<vtkOpenGLQuadHelper>(new vtkOpenGLQuadHelper(
+    window, tilesVertex.c_str(), WithCommon(scatterer_transport_diffuse, "").c_str(), ""));
+  if (!this->Source->Program || !this->Diffuse->Program)
   {
-    return std::unique_ptr<vtkOpenGLQuadHelper>(
-      new vtkOpenGLQuadHelper(window, tilesVertex.c_str(), fs.c_str(), ""));
-  };
-  this->Source = tiles(WithCommon(scatterer_transport_source, variant));
-  this->Diffuse = tiles(WithCommon(scatterer_transport_diffuse, ""));
-  for (auto* q : this->All())
+    why = kCompileFailed;
+    this->Source.reset();
+    this->Diffuse.reset();
+    return false;
+  }
+  return true;
+}
+
+bool TransportPrograms::CreateMedium(vtkOpenGLRenderWindow* window, std::string& why)
+{
+  if (this->Medium)
   {
-    if (!(*q)->Program)
+    return true;
+  }
+  // Every pass but the sweep draws whole 3D textures, all their layers in one draw.
+  this->Medium.reset(
+    NewLayeredQuad(window, WithCommon(scatterer_transport_medium, this->CreatedVariant)));
+  this->Coarsen.reset(
+    NewLayeredQuad(window, WithCommon(scatterer_transport_coarsen, this->CreatedVariant)));
+  this->Count.reset(
+    NewLayeredQuad(window, WithCommon(scatterer_transport_count, this->CreatedVariant)));
+  // A 2D target: VTK's full-screen quad.
+  this->FluenceStart.reset(new vtkOpenGLQuadHelper(
+    window, nullptr, WithCommon(scatterer_transport_fluence_start, "").c_str(), ""));
+  for (auto* quad : this->MediumQuads())
+  {
+    if (!(*quad)->Program)
     {
       why = kCompileFailed;
-      for (auto* p : this->All())
-      {
-        p->reset();
-      }
+      this->ReleaseMedium(window);
       return false;
     }
   }
   return true;
 }
 
-std::array<std::unique_ptr<vtkOpenGLQuadHelper>*, 6> TransportPrograms::All()
+void TransportPrograms::ReleaseMedium(vtkWindow* window)
 {
-  return { &this->Medium, &this->Coarsen, &this->Count, &this->FluenceStart, &this->Source,
-    &this->Diffuse };
+  for (auto* quad : this->MediumQuads())
+  {
+    ReleaseWithProgram(window, *quad);
+  }
+}
+
+std::array<std::unique_ptr<vtkOpenGLQuadHelper>*, 4> TransportPrograms::MediumQuads()
+{
+  return { &this->Medium, &this->Coarsen, &this->Count, &this->FluenceStart };
 }
 
 vtkOpenGLQuadHelper* TransportPrograms::Arrive(vtkOpenGLRenderWindow* window, std::string& why)
@@ -273,36 +312,23 @@ bool TransportPrograms::SweepLines(vtkOpenGLRenderWindow* window, int entering, 
 
 void TransportPrograms::ReleaseGraphicsResources(vtkWindow* window)
 {
-  for (auto* q : this->All())
-  {
-    if (*q)
-    {
-      (*q)->ReleaseGraphicsResources(window);
-      q->reset();
-    }
-  }
-  const auto release = [window](std::unique_ptr<vtkOpenGLQuadHelper>& quad)
-  {
-    if (quad)
-    {
-      quad->ReleaseGraphicsResources(window);
-      quad.reset();
-    }
-  };
+  this->ReleaseMedium(window);
+  Release(window, this->Source);
+  Release(window, this->Diffuse);
   for (auto& sweep : this->Sweeps)
   {
-    release(sweep);
+    Release(window, sweep);
   }
-  release(this->Lines);
-  release(this->ArriveQuad);
+  Release(window, this->Lines);
+  Release(window, this->ArriveQuad);
   for (auto& gather : this->GatherQuads)
   {
-    release(gather);
+    Release(window, gather);
   }
-  release(this->DimLightsQuad);
+  Release(window, this->DimLightsQuad);
   for (auto& texels : this->LineTexels)
   {
-    release(texels);
+    Release(window, texels);
   }
   this->LinesRefused = false;
 }

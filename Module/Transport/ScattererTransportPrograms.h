@@ -32,9 +32,16 @@ enum GatherVariant
   GatherVariants = 3
 };
 
-/** The pass programs, compiled together once per context and component rule. */
+/** The pass programs, compiled once per context and component rule (Create), the light
+ * passes' when first used, the medium's for each of its builds (CreateMedium). */
 struct TransportPrograms
 {
+  // The medium's passes run when the medium changes (a transfer function edited, a
+  // clipping plane moved), not when a light moves, as under the headlight in an orbit.
+  // Their programs are compiled for those passes and released after them, OpenGL objects
+  // included, unless the medium changed in the build before too (a drag): on llvmpipe a
+  // compiled program is host memory, about 2.6 MiB for these four at 511x511x215
+  // (docs/rendering.md, the memory target). Null when released.
   std::unique_ptr<vtkOpenGLQuadHelper> Medium;  ///< pass 0a: what no light changes, fine grid
   std::unique_ptr<vtkOpenGLQuadHelper> Coarsen; ///< pass 0b: medium and occlusion, coarse grid
   std::unique_ptr<vtkOpenGLQuadHelper> Count;   ///< pass 0c: which gather each layer needs
@@ -59,7 +66,7 @@ struct TransportPrograms
   /** True when the programs exist for @p variant. */
   bool IsCreated(const std::string& variant) const
   {
-    return this->Medium != nullptr && this->CreatedVariant == variant;
+    return this->Source != nullptr && this->CreatedVariant == variant;
   }
 
   /**
@@ -105,14 +112,20 @@ struct TransportPrograms
    */
   vtkOpenGLQuadHelper* DimLights(vtkOpenGLRenderWindow* window, std::string& why);
 
-  /** Compiles the programs for @p variant in @p window (releasing any others); false
-   * with @p why set (and none kept) if the OpenGL implementation refuses one. */
+  /** Compiles the diffusion's programs for @p variant in @p window (releasing any others);
+   * false with @p why set (and none kept) if the OpenGL implementation refuses one. */
   bool Create(vtkOpenGLRenderWindow* window, const std::string& variant, std::string& why);
+  /** Compiles the medium's programs (Medium, Coarsen, Count, FluenceStart) for the variant
+   * created, unless they are; false with @p why set (and none kept) if the OpenGL
+   * implementation refuses one. */
+  bool CreateMedium(vtkOpenGLRenderWindow* window, std::string& why);
+  /** Releases the medium's programs, their OpenGL programs too. */
+  void ReleaseMedium(vtkWindow* window);
 
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:
-  std::array<std::unique_ptr<vtkOpenGLQuadHelper>*, 6> All();
+  std::array<std::unique_ptr<vtkOpenGLQuadHelper>*, 4> MediumQuads();
   std::unique_ptr<vtkOpenGLQuadHelper> Sweeps[kSweepKinds]; ///< pass 1, per kind, when first used
   std::unique_ptr<vtkOpenGLQuadHelper> Lines;               ///< SweepLines' first draw
   /// its second, per one sample x entering x arriving

@@ -88,6 +88,7 @@ struct vtkScattererTransportVolume::vtkInternals
   int MediumAllocations = 0;
   bool HasMedium = false;
   int MediumBuilds = 0;
+  bool MediumChangedLastBuild = false; ///< the last build ran the medium's passes
   double LastMs = 0.0;
   StageMilliseconds LastStages;
   int Builds = 0;
@@ -166,6 +167,14 @@ bool vtkScattererTransportVolume::vtkInternals::RunPasses(
     this->MediumAllocations = this->Textures.MediumAllocations;
     lap(this->LastStages.Medium);
   }
+  // The medium's programs are kept while the medium changes build after build (a transfer
+  // function or a clipping plane dragged), and released otherwise, before the light's
+  // passes compile theirs (TransportPrograms::Medium).
+  if (!mediumChanged || !this->MediumChangedLastBuild)
+  {
+    this->Programs.ReleaseMedium(this->Context);
+  }
+  this->MediumChangedLastBuild = mediumChanged;
   // The lights of pass 2a need their texture; one directional light alone does not.
   if (ok && scatterer_gpu::HasArrivingLights(in))
   {
@@ -544,6 +553,11 @@ int vtkScattererTransportVolume::GetMediumBuildCount() const
   return this->Internals->MediumBuilds;
 }
 
+bool vtkScattererTransportVolume::GetHoldsMediumPrograms() const
+{
+  return this->Internals->Programs.Medium != nullptr;
+}
+
 size_t vtkScattererTransportVolume::GetGPUBytes() const
 {
   return this->Internals->Textures.GetGPUBytes() + this->Internals->DimTextures.GetGPUBytes();
@@ -576,6 +590,7 @@ void vtkScattererTransportVolume::PrintSelf(ostream& os, vtkIndent indent)
     os << indent << "Refused: " << s.Refused << "\n";
   }
   os << indent << "MediumBuilds: " << s.MediumBuilds << "\n";
+  os << indent << "HoldsMediumPrograms: " << (s.Programs.Medium ? "yes" : "no") << "\n";
   os << indent << "LastBuildMilliseconds: " << s.LastMs << "\n";
   const StageMilliseconds& t = s.LastStages;
   os << indent << "LastBuildStageMilliseconds: medium " << t.Medium << ", sweeps " << t.Sweeps

@@ -255,6 +255,12 @@ public:
    * clipping, cropping, the materials or the grid change, not when a light moves. */
   int GetMediumBuildCount() const;
 
+  /** True while the medium's programs are held (for tests): they are compiled for the
+   * medium's passes and kept only while the medium changes build after build (a transfer
+   * function dragged), so that an orbit holds none (on llvmpipe a compiled program is
+   * host memory). */
+  bool GetHoldsMediumPrograms() const;
+
   /** GPU bytes held: the light and source textures, the transmittance, the slices, a
    * directional light's lines, the diffusion grids. */
   size_t GetGPUBytes() const;

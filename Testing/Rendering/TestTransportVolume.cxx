@@ -1351,6 +1351,37 @@ TEST(TransportVolume, MediumPassesRunWhenTheMediumChangesNotWhenALightMoves)
   EXPECT_LE(worst, 1e-6f * largest) << "the build after the edit used the old medium";
 }
 
+// The medium's programs run when the medium changes: they are held while it changes
+// build after build (a transfer function dragged: no compile a frame) and released by a
+// build that follows one without a change, or whose medium did not change (an orbit holds
+// none: on llvmpipe a compiled program is host memory, docs/rendering.md).
+TEST(TransportVolume, MediumProgramsAreHeldOnlyWhileTheMediumKeepsChanging)
+{
+  SlabInWindow slab;
+  vtkScattererTransportVolume* transport = slab.Transport;
+  EXPECT_FALSE(transport->GetHoldsMediumPrograms()) << "held after a first build";
+  slab.Scene.SetDirectional(1, 0, 1);
+  slab.Window->Render();
+  double level = 0.5;
+  const auto edit = [&]()
+  {
+    level += 0.05;
+    slab.Scene.Property->GetScalarOpacity()->AddPoint(200, level);
+    slab.Window->Render();
+  };
+  edit();
+  EXPECT_FALSE(transport->GetHoldsMediumPrograms()) << "held after one edit, after a light move";
+  const int first = transport->GetMediumBuildCount();
+  edit();
+  edit();
+  ASSERT_EQ(transport->GetMediumBuildCount(), first + 2) << "the edits were not seen";
+  EXPECT_TRUE(transport->GetHoldsMediumPrograms()) << "released while the edits go on";
+  slab.Scene.SetDirectional(0, 1, 1);
+  slab.Window->Render();
+  EXPECT_EQ(transport->GetMediumBuildCount(), first + 2);
+  EXPECT_FALSE(transport->GetHoldsMediumPrograms()) << "held after a light move";
+}
+
 // The passes sample the medium through the ray caster's own texture, whose filter VTK
 // switches in place when the property's interpolation type changes (no upload): a
 // change of interpolation lights as a first build with it does. Found stale by a
