@@ -32,16 +32,17 @@ enum GatherVariant
   GatherVariants = 3
 };
 
-/** The pass programs, compiled once per context and component rule (Create), the light
- * passes' when first used, the medium's for each of its builds (CreateMedium). */
+/** The pass programs for a context and component rule: the diffusion's compiled by Create,
+ * the light passes' when first used, the medium's for its passes (CreateMedium). */
 struct TransportPrograms
 {
   // The medium's passes run when the medium changes (a transfer function edited, a
   // clipping plane moved), not when a light moves, as under the headlight in an orbit.
   // Their programs are compiled for those passes and released after them, OpenGL objects
-  // included, unless the medium changed in the build before too (a drag): on llvmpipe a
-  // compiled program is host memory, about 2.6 MiB for these four at 511x511x215
-  // (docs/rendering.md, the memory target). Null when released.
+  // included; when the medium changed in the build before too (a drag) they are kept
+  // until a build whose medium does not change. On llvmpipe a compiled program is host
+  // memory, about 2.6 MiB for these four at 511x511x215 (docs/rendering.md, the memory
+  // target). Null when released.
   std::unique_ptr<vtkOpenGLQuadHelper> Medium;  ///< pass 0a: what no light changes, fine grid
   std::unique_ptr<vtkOpenGLQuadHelper> Coarsen; ///< pass 0b: medium and occlusion, coarse grid
   std::unique_ptr<vtkOpenGLQuadHelper> Count;   ///< pass 0c: which gather each layer needs

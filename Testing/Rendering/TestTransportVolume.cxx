@@ -1352,9 +1352,10 @@ TEST(TransportVolume, MediumPassesRunWhenTheMediumChangesNotWhenALightMoves)
 }
 
 // The medium's programs run when the medium changes: they are held while it changes
-// build after build (a transfer function dragged: no compile a frame) and released by a
-// build that follows one without a change, or whose medium did not change (an orbit holds
-// none: on llvmpipe a compiled program is host memory, docs/rendering.md).
+// build after build (a transfer function dragged: no compile a frame). A build that
+// changes the medium after one that did not releases them after its passes, as does any
+// build whose medium did not change (an orbit holds none: on llvmpipe a compiled program
+// is host memory, docs/rendering.md).
 TEST(TransportVolume, MediumProgramsAreHeldOnlyWhileTheMediumKeepsChanging)
 {
   SlabInWindow slab;
