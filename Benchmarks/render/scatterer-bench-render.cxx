@@ -12,7 +12,10 @@
 // arriving light, gather, diffusion), each waiting for the GPU.
 //
 //   scatterer-bench-render [--frames N] [--size WxH] [--out DIR] [--resample XxYxZ]
-//                          [--only a,b] [--append] [--slice-sweep]
+//                          [--only a,b] [--append] [--slice-sweep] [--pairs N]
+//
+// --pairs N: instead, each selected configuration's frames alternating with those of its
+// stock counterpart, N pairs, and the median of the pairs' ratios (RunPairs, paired.csv).
 //
 // Built as scatterer-bench-render-egl (SCATTERER_BENCH_EGL), the same benchmark renders
 // into a headless EGL context (ScattererEglContext.h) instead of an X window: for GPU
@@ -53,6 +56,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -159,11 +163,226 @@ double PeakRssMiB()
   }
   return 0.0;
 }
+
+// The configuration that a --pairs run alternates with `config`: the stock composite
+// still, orbiting with it, or the stock vtkMultiVolume, the frames its ratio is taken to.
+Config StockCounterpart(const Config& config)
+{
+  Config stock{ config.Multi ? "stock_multivolume"
+      : config.Orbit         ? "stock_composite_orbit"
+                             : "stock_composite",
+    "stock" };
+  stock.Orbit = config.Orbit;
+  stock.Multi = config.Multi;
+  return stock;
+}
+
+// The q-th quantile (0..1) of v, linearly interpolated between order statistics.
+double Quantile(std::vector<double> v, double q)
+{
+  std::sort(v.begin(), v.end());
+  const double at = q * static_cast<double>(v.size() - 1);
+  const size_t below = static_cast<size_t>(at);
+  const size_t above = std::min(below + 1, v.size() - 1);
+  return v[below] + (at - static_cast<double>(below)) * (v[above] - v[below]);
+}
+
+// One configuration's scene: its mapper, volume property and renderer, and what moves
+// from frame to frame (the camera, the point light, the opacity function).
+struct Scene
+{
+  Config Setup;
+  vtkSmartPointer<vtkGPUVolumeRayCastMapper> Mapper;
+  vtkScattererTemplateVolumeMapper* Template = nullptr; // null for the stock mappers
+  vtkNew<vtkVolumeProperty> Property;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkLight> PointLight;
+  double Centre[3] = { 0, 0, 0 }, Radius = 1.0, Toward[3] = { 0, 0, 1 }, Up[3] = { 0, 1, 0 },
+         Right[3] = { 1, 0, 0 };
+
+  Scene(const Config& config, vtkImageData* image, bool sliceSweep)
+    : Setup(config)
+  {
+    scatterer_examples::RenderOptions o;
+    o.Mode = config.Mode;
+    o.Illumination = config.Illumination;
+    this->Mapper = scatterer_examples::MakeMapper(o);
+    this->Mapper->SetInputData(image);
+    this->Template = vtkScattererTemplateVolumeMapper::SafeDownCast(this->Mapper);
+    if (this->Template)
+    {
+      // build times include the GPU work
+      this->Template->GetTransportVolume()->SetSynchronousTiming(true);
+      // --slice-sweep: directional lights swept one slice per draw (A/B measurements)
+      this->Template->GetTransportVolume()->SetSweepLinesInParallel(!sliceSweep);
+    }
+    if (config.Multi)
+    {
+      this->Renderer->AddVolume(MultiScene(this->Mapper, image, this->Property));
+    }
+    else
+    {
+      scatterer_examples::AddVolume(this->Renderer, this->Mapper, this->Property);
+    }
+    scatterer_examples::ApplyCtHeadProperty(this->Property);
+    scatterer_examples::ApplyCtHeadCamera(this->Renderer);
+    scatterer_examples::ApplyCtHeadLight(this->Renderer);
+    scatterer_examples::ApplyCtHeadMapperSettings(this->Mapper);
+    this->Property->SetShade(config.Mode == "phong");
+    if (config.Orbit)
+    {
+      this->Renderer->RemoveAllLights();
+      this->Renderer->AutomaticLightCreationOn(); // VTK's headlight: it moves with the camera
+    }
+    if (config.LightKit)
+    {
+      this->Renderer->AutomaticLightCreationOff();
+      vtkNew<vtkLightKit> kit;
+      kit->AddLightsToRenderer(this->Renderer);
+    }
+    if (config.PointLight)
+    {
+      // 1.5 bounding radii from the head's centre, on a circle through the camera's side
+      // of it, above the centre.
+      image->GetCenter(this->Centre);
+      this->Radius = 0.75 * image->GetLength(); // the bounding box's diagonal
+      vtkCamera* camera = this->Renderer->GetActiveCamera();
+      camera->GetDirectionOfProjection(this->Toward);
+      camera->GetViewUp(this->Up);
+      vtkMath::Cross(this->Toward, this->Up, this->Right);
+      vtkMath::Normalize(this->Right);
+      this->Renderer->AutomaticLightCreationOff();
+      this->Renderer->RemoveAllLights();
+      this->PointLight->SetLightTypeToSceneLight();
+      this->PointLight->PositionalOn();
+      this->PointLight->SetConeAngle(180.0);
+      this->PointLight->SetFocalPoint(this->Centre);
+      this->Renderer->AddLight(this->PointLight);
+      this->PlacePointLight(30.0);
+    }
+  }
+
+  // The point light at `degrees` on its circle (0: between the camera and the head).
+  void PlacePointLight(double degrees)
+  {
+    const double t = vtkMath::RadiansFromDegrees(degrees);
+    double p[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      p[a] = this->Centre[a] +
+        this->Radius * (std::sin(t) * this->Right[a] - std::cos(t) * this->Toward[a]) +
+        0.5 * this->Radius * this->Up[a];
+    }
+    this->PointLight->SetPosition(p);
+  }
+
+  // What changes before timed frame `frame` (from 0) is drawn.
+  void Advance(int frame)
+  {
+    if (this->Setup.Orbit)
+    {
+      this->Renderer->GetActiveCamera()->Azimuth(2.0);
+    }
+    if (this->Setup.PointLight)
+    {
+      this->PlacePointLight(30.0 + 2.0 * (frame + 1));
+    }
+    if (this->Setup.TransferEdit)
+    {
+      vtkPiecewiseFunction* opacity = this->Property->GetScalarOpacity();
+      double node[4];
+      opacity->GetNodeValue(opacity->GetSize() - 1, node);
+      node[1] *= frame % 2 == 0 ? 0.99 : 1.0 / 0.99;
+      opacity->SetNodeValue(opacity->GetSize() - 1, node);
+    }
+  }
+
+  // Draws the scene as the window's one renderer; its milliseconds, the GPU work finished.
+  double Draw(vtkRenderWindow* window)
+  {
+    vtkRendererCollection* renderers = window->GetRenderers();
+    if (renderers->GetNumberOfItems() != 1 || renderers->GetFirstRenderer() != this->Renderer)
+    {
+      renderers->RemoveAllItems();
+      window->AddRenderer(this->Renderer);
+    }
+    window->SetDesiredUpdateRate(this->Setup.Interactive ? 20.0 : 0.0001);
+    const auto start = std::chrono::steady_clock::now();
+    window->Render();
+    window->WaitForCompletion();
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
+  }
+};
+
+// --pairs N: each selected configuration other than the stock composite against its stock
+// counterpart (StockCounterpart), their timed frames alternating, N pairs, the stock frame
+// first in even pairs and second in odd ones. A pair's ratio is taken over two frames
+// drawn a second apart, so the drift of a shared machine over a run (within one run of
+// 2026-12-08 the CT head's stock composite measured 399 ms still and 511 ms orbiting, the
+// same work, and the still ratio 1.06x to 1.60x that day) cancels, where the ratios of
+// configurations drawn one after the other (render.csv) carry it. Writes OUT/paired.csv: the pairs' median ratio and
+// quartiles, each side's median frame, the median build.
+int RunPairs(vtkRenderWindow* window, vtkImageData* image, const std::string& volumeName,
+  const std::string& out, int pairs, const std::function<bool(const std::string&)>& selected,
+  bool sliceSweep, bool append)
+{
+  const std::string csvPath = out + "/paired.csv";
+  const bool header = !append || !std::ifstream(csvPath).good();
+  std::ofstream csv(csvPath, append ? std::ios::app : std::ios::trunc);
+  if (header)
+  {
+    csv << "volume,config,stock_config,pairs,ratio_median,ratio_q1,ratio_q3,stock_median_ms,"
+           "median_ms,build_ms,shader\n";
+  }
+  for (const Config& config : Configs())
+  {
+    if (config.Mode == "stock" || !selected(config.Name))
+      continue;
+    const Config stockConfig = StockCounterpart(config);
+    Scene stock(stockConfig, image, sliceSweep), scene(config, image, sliceSweep);
+    stock.Draw(window); // warm-up each: shader compile, uploads, transport volume
+    scene.Draw(window);
+    std::vector<double> ratios, stockMs, ms, buildMs;
+    for (int f = 0; f < pairs; ++f)
+    {
+      stock.Advance(f);
+      scene.Advance(f);
+      double s = 0.0, t = 0.0;
+      if (f % 2 == 0)
+      {
+        s = stock.Draw(window);
+        t = scene.Draw(window);
+      }
+      else
+      {
+        t = scene.Draw(window);
+        s = stock.Draw(window);
+      }
+      stockMs.push_back(s);
+      ms.push_back(t);
+      ratios.push_back(t / s);
+      buildMs.push_back(scene.Template ? scene.Template->GetLastTransportBuildMilliseconds() : 0.0);
+    }
+    const std::string shader = scene.Template ? scene.Template->GetLastShaderFeatures() : "stock";
+    csv << volumeName << ',' << config.Name << ',' << stockConfig.Name << ',' << pairs << ','
+        << Median(ratios) << ',' << Quantile(ratios, 0.25) << ',' << Quantile(ratios, 0.75) << ','
+        << Median(stockMs) << ',' << Median(ms) << ',' << Median(buildMs) << ",\"" << shader
+        << "\"\n";
+    csv.flush();
+    std::printf(
+      "%-12s %-40s x%.3f (quartiles %.3f-%.3f, %d pairs)  %8.1f / %8.1f ms  build %6.1f ms\n",
+      volumeName.c_str(), config.Name.c_str(), Median(ratios), Quantile(ratios, 0.25),
+      Quantile(ratios, 0.75), pairs, Median(ms), Median(stockMs), Median(buildMs));
+  }
+  std::printf("wrote %s\n", csvPath.c_str());
+  return 0;
+}
 }
 
 int main(int argc, char* argv[])
 {
-  int frames = 5, width = 512, height = 512, resample[3] = { 0, 0, 0 };
+  int frames = 5, pairs = 0, width = 512, height = 512, resample[3] = { 0, 0, 0 };
   std::string out = "render-benchmark", only;
   bool append = false, sliceSweep = false;
   // Numbers as the example programs take them (strict, in range): --size -5x-5 and
@@ -180,6 +399,11 @@ int main(int argc, char* argv[])
     if (a == "--frames" && i + 1 < argc)
     {
       if (!scatterer_examples::ParseInt(argv[++i], 1, 1000, frames, why))
+        return refused(a, argv[i]);
+    }
+    else if (a == "--pairs" && i + 1 < argc)
+    {
+      if (!scatterer_examples::ParseInt(argv[++i], 1, 1000, pairs, why))
         return refused(a, argv[i]);
     }
     else if (a == "--size" && i + 1 < argc)
@@ -201,7 +425,7 @@ int main(int argc, char* argv[])
     else
     {
       std::cerr << "usage: scatterer-bench-render [--frames N] [--size WxH] [--out DIR] "
-                   "[--resample XxYxZ] [--only a,b] [--append] [--slice-sweep]\n";
+                   "[--resample XxYxZ] [--only a,b] [--append] [--slice-sweep] [--pairs N]\n";
       return 2;
     }
   }
@@ -271,119 +495,26 @@ int main(int argc, char* argv[])
            "build_medium_ms,build_sweeps_ms,build_arriving_ms,build_gather_ms,"
            "build_diffusion_ms\n";
   }
+  const auto selected = [&only](const std::string& name)
+  { return only.empty() || ("," + only + ",").find("," + name + ",") != std::string::npos; };
+  if (pairs > 0)
+  {
+    return RunPairs(window, image, volumeName, out, pairs, selected, sliceSweep, append);
+  }
   double stockStill = 0.0, stockOrbit = 0.0, stockMulti = 0.0;
   for (const Config& config : Configs())
   {
-    if (!only.empty() && ("," + only + ",").find("," + config.Name + ",") == std::string::npos)
+    if (!selected(config.Name))
       continue;
-    scatterer_examples::RenderOptions o;
-    o.Mode = config.Mode;
-    o.Illumination = config.Illumination;
-    auto mapper = scatterer_examples::MakeMapper(o);
-    mapper->SetInputData(image);
-    auto* st = vtkScattererTemplateVolumeMapper::SafeDownCast(mapper);
-    if (st)
-    {
-      st->GetTransportVolume()->SetSynchronousTiming(true); // build times include the GPU work
-      // --slice-sweep: directional lights swept one slice per draw (A/B measurements)
-      st->GetTransportVolume()->SetSweepLinesInParallel(!sliceSweep);
-    }
-    vtkNew<vtkVolumeProperty> property;
-    vtkNew<vtkRenderer> renderer;
-    if (config.Multi)
-    {
-      renderer->AddVolume(
-        MultiScene(vtkGPUVolumeRayCastMapper::SafeDownCast(mapper), image, property));
-    }
-    else
-    {
-      scatterer_examples::AddVolume(renderer, mapper, property);
-    }
-    scatterer_examples::ApplyCtHeadProperty(property);
-    scatterer_examples::ApplyCtHeadCamera(renderer);
-    scatterer_examples::ApplyCtHeadLight(renderer);
-    scatterer_examples::ApplyCtHeadMapperSettings(mapper);
-    property->SetShade(config.Mode == "phong");
-    if (config.Orbit)
-    {
-      renderer->RemoveAllLights();
-      renderer->AutomaticLightCreationOn(); // VTK's headlight: it moves with the camera
-    }
-    if (config.LightKit)
-    {
-      renderer->AutomaticLightCreationOff();
-      vtkNew<vtkLightKit> kit;
-      kit->AddLightsToRenderer(renderer);
-    }
-    vtkNew<vtkLight> pointLight;
-    double centre[3] = { 0, 0, 0 }, radius = 1.0, toward[3] = { 0, 0, 1 }, up[3] = { 0, 1, 0 },
-           right[3] = { 1, 0, 0 };
-    if (config.PointLight)
-    {
-      // 1.5 bounding radii from the head's centre, on a circle through the camera's side
-      // of it, above the centre.
-      image->GetCenter(centre);
-      radius = 0.75 * image->GetLength(); // the bounding box's diagonal
-      vtkCamera* camera = renderer->GetActiveCamera();
-      camera->GetDirectionOfProjection(toward);
-      camera->GetViewUp(up);
-      vtkMath::Cross(toward, up, right);
-      vtkMath::Normalize(right);
-      renderer->AutomaticLightCreationOff();
-      renderer->RemoveAllLights();
-      pointLight->SetLightTypeToSceneLight();
-      pointLight->PositionalOn();
-      pointLight->SetConeAngle(180.0);
-      pointLight->SetFocalPoint(centre);
-      renderer->AddLight(pointLight);
-    }
-    // The point light at `degrees` on its circle (0: between the camera and the head).
-    const auto placePointLight = [&](double degrees)
-    {
-      const double t = vtkMath::RadiansFromDegrees(degrees);
-      double p[3];
-      for (int a = 0; a < 3; ++a)
-      {
-        p[a] = centre[a] + radius * (std::sin(t) * right[a] - std::cos(t) * toward[a]) +
-          0.5 * radius * up[a];
-      }
-      pointLight->SetPosition(p);
-    };
-    if (config.PointLight)
-    {
-      placePointLight(30.0);
-    }
-    window->GetRenderers()->RemoveAllItems();
-    window->AddRenderer(renderer);
-    window->SetDesiredUpdateRate(config.Interactive ? 20.0 : 0.0001);
-    window->Render(); // warm-up: shader compile, uploads, transport volume
-    window->WaitForCompletion();
+    Scene scene(config, image, sliceSweep);
+    vtkScattererTemplateVolumeMapper* st = scene.Template;
+    scene.Draw(window); // warm-up: shader compile, uploads, transport volume
     // The build's stages per frame: medium, sweeps, arriving, gather, diffusion.
     std::vector<double> ms, buildMs, stageMs[5];
     for (int f = 0; f < frames; ++f)
     {
-      if (config.Orbit)
-      {
-        renderer->GetActiveCamera()->Azimuth(2.0);
-      }
-      if (config.PointLight)
-      {
-        placePointLight(30.0 + 2.0 * (f + 1));
-      }
-      if (config.TransferEdit)
-      {
-        vtkPiecewiseFunction* opacity = property->GetScalarOpacity();
-        double node[4];
-        opacity->GetNodeValue(opacity->GetSize() - 1, node);
-        node[1] *= f % 2 == 0 ? 0.99 : 1.0 / 0.99;
-        opacity->SetNodeValue(opacity->GetSize() - 1, node);
-      }
-      const auto start = std::chrono::steady_clock::now();
-      window->Render();
-      window->WaitForCompletion();
-      ms.push_back(
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-          .count());
+      scene.Advance(f);
+      ms.push_back(scene.Draw(window));
       buildMs.push_back(st ? st->GetLastTransportBuildMilliseconds() : 0.0);
       const auto stages = st ? st->GetTransportVolume()->GetLastBuildStageMilliseconds()
                              : vtkScattererTransportVolume::StageMilliseconds();
