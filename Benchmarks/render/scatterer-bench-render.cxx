@@ -321,8 +321,8 @@ struct Scene
 // drawn a second apart, so the drift of a shared machine over a run (within one run of
 // 2026-12-08 the CT head's stock composite measured 399 ms still and 511 ms orbiting, the
 // same work, and the still ratio 1.06x to 1.60x that day) cancels, where the ratios of
-// configurations drawn one after the other (render.csv) carry it. Writes OUT/paired.csv: the pairs' median ratio and
-// quartiles, each side's median frame, the median build.
+// configurations drawn one after the other (render.csv) carry it. Writes OUT/paired.csv:
+// the pairs' median ratio and quartiles, each side's median frame, the median build.
 int RunPairs(vtkRenderWindow* window, vtkImageData* image, const std::string& volumeName,
   const std::string& out, int pairs, const std::function<bool(const std::string&)>& selected,
   bool sliceSweep, bool append)
