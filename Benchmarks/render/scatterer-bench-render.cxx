@@ -335,10 +335,12 @@ int RunPairs(vtkRenderWindow* window, vtkImageData* image, const std::string& vo
     csv << "volume,config,stock_config,pairs,ratio_median,ratio_q1,ratio_q3,stock_median_ms,"
            "median_ms,build_ms,shader\n";
   }
+  int paired = 0;
   for (const Config& config : Configs())
   {
     if (config.Mode == "stock" || !selected(config.Name))
       continue;
+    ++paired;
     const Config stockConfig = StockCounterpart(config);
     Scene stock(stockConfig, image, sliceSweep), scene(config, image, sliceSweep);
     stock.Draw(window); // warm-up each: shader compile, uploads, transport volume
@@ -374,6 +376,12 @@ int RunPairs(vtkRenderWindow* window, vtkImageData* image, const std::string& vo
       "%-12s %-40s x%.3f (quartiles %.3f-%.3f, %d pairs)  %8.1f / %8.1f ms  build %6.1f ms\n",
       volumeName.c_str(), config.Name.c_str(), Median(ratios), Quantile(ratios, 0.25),
       Quantile(ratios, 0.75), pairs, Median(ms), Median(stockMs), Median(buildMs));
+  }
+  if (paired == 0)
+  {
+    std::cerr << "--pairs: no configuration to pair with stock composite among those "
+                 "--only selects (a stock configuration is the other side of every pair)\n";
+    return 2;
   }
   std::printf("wrote %s\n", csvPath.c_str());
   return 0;
